@@ -1,0 +1,51 @@
+// roiclip: exact clipping of self-intersecting polygons (extended Weiler-Atherton).
+// This header includes only the standard library and GLM. See geometry.hpp for conventions.
+#pragma once
+
+#include <roiclip/error.hpp>
+#include <roiclip/geometry.hpp>
+
+namespace roiclip {
+
+/// Resolve any set of closed paths (self-intersecting, overlapping, touching, wound several
+/// times) into simple, non-overlapping outer rings with holes that cover exactly the points the
+/// fill rule says the input covers.
+///
+/// @param paths closed paths; a path with fewer than 3 distinct grid points, or with zero area,
+///        contributes nothing (it is not an error).
+/// @param rule  fill rule applied to the winding number of all paths together.
+/// @param grid  snapping grid (default 1/256 px).
+/// @return outer rings (negative shoelace sum) and holes (positive), nested as a forest.
+/// @throws InvalidInputError on NaN, infinity, or a coordinate outside the grid's range; the
+///         message names the path and vertex index.
+PolygonSet simplify(const Paths& paths, FillRule rule, const Grid& grid = {});
+
+/// Boolean operation between two path sets, each read with its own fill rule:
+/// the result covers exactly { p : op(subjectRule(w_subject(p)), clipRule(w_clip(p))) }.
+/// Both operands may self-intersect, overlap, share vertices and edges, or contain holes.
+/// @throws InvalidInputError as simplify().
+PolygonSet clip(ClipOp op, const Paths& subject, const Paths& clip, FillRule subjectRule,
+                FillRule clipRule, const Grid& grid = {});
+
+/// Shorthands for clip() with one fill rule for both operands.
+PolygonSet intersect(const Paths& subject, const Paths& clip, FillRule rule = FillRule::EvenOdd,
+                     const Grid& grid = {});
+PolygonSet unite(const Paths& subject, const Paths& clip, FillRule rule = FillRule::EvenOdd,
+                 const Grid& grid = {});
+PolygonSet subtract(const Paths& subject, const Paths& clip, FillRule rule = FillRule::EvenOdd,
+                    const Grid& grid = {});
+PolygonSet symmetricDifference(const Paths& subject, const Paths& clip,
+                               FillRule rule = FillRule::EvenOdd, const Grid& grid = {});
+
+/// True when the fill rule counts winding number w as inside.
+bool isFilled(FillRule rule, long long w);
+
+/// Parse "evenodd", "nonzero", "positive", "negative" (case-insensitive; also "even-odd",
+/// "non-zero"). @throws InvalidInputError on anything else.
+FillRule parseFillRule(const char* name);
+const char* toString(FillRule rule);
+/// Parse "intersection", "union", "difference", "xor". @throws InvalidInputError.
+ClipOp parseClipOp(const char* name);
+const char* toString(ClipOp op);
+
+}  // namespace roiclip

@@ -1,0 +1,2 @@
+// Placeholder until the AprilTag detector lands.
+namespace roiclip::apriltag {}

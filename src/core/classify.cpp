@@ -1,0 +1,42 @@
+// Stage 2: decide from the winding numbers on both sides of each piece whether it bounds the
+// result, and on which side the result lies.
+//
+// The paper classifies whole contours as holes by their winding number and later deletes edges
+// whose midpoint falls inside a hole. Doing the same per piece, from the exact winding numbers
+// on its two sides, is what makes the decision correct for nested, overlapping and touching
+// contours and for every fill rule, not just even-odd and non-zero.
+#include <roiclip/roiclip.hpp>
+
+#include "pipeline.hpp"
+
+namespace roiclip::detail {
+
+bool Combination::inside(const Windings& w) const {
+  const bool s = isFilled(subjectRule, w[0]);
+  if (!binary) return s;
+  const bool c = isFilled(clipRule, w[1]);
+  switch (op) {
+    case ClipOp::Intersection:
+      return s && c;
+    case ClipOp::Union:
+      return s || c;
+    case ClipOp::Difference:
+      return s && !c;
+    case ClipOp::Xor:
+      return s != c;
+  }
+  return false;
+}
+
+std::vector<Side> classifyPieces(const Arrangement& arrangement, const Combination& combination) {
+  std::vector<Side> sides(arrangement.pieces.size(), Side::None);
+  for (std::size_t i = 0; i < arrangement.pieces.size(); ++i) {
+    const EdgePiece& piece = arrangement.pieces[i];
+    const bool below = combination.inside(piece.windBelow);
+    const bool above = combination.inside(piece.windAbove());
+    if (below != above) sides[i] = above ? Side::Above : Side::Below;
+  }
+  return sides;
+}
+
+}  // namespace roiclip::detail

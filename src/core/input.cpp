@@ -1,0 +1,60 @@
+// Stage 0: validate input paths and snap them to the integer grid.
+#include <cmath>
+#include <string>
+
+#include <roiclip/error.hpp>
+
+#include "pipeline.hpp"
+
+namespace roiclip::detail {
+namespace {
+
+std::int64_t snap(double v, double scale, const char* axis, std::size_t pathIndex,
+                  std::size_t vertexIndex, int operand) {
+  const char* which = operand == 0 ? "subject" : "clip";
+  if (!std::isfinite(v)) {
+    throw InvalidInputError(std::string(which) + " path " + std::to_string(pathIndex) +
+                            ", vertex " + std::to_string(vertexIndex) + ": " + axis +
+                            " is not a finite number");
+  }
+  const double units = std::nearbyint(v * scale);
+  if (!(std::fabs(units) <= double(Grid::kMaxUnits))) {
+    throw InvalidInputError(std::string(which) + " path " + std::to_string(pathIndex) +
+                            ", vertex " + std::to_string(vertexIndex) + ": " + axis + " = " +
+                            std::to_string(v) + " is outside the supported range +-" +
+                            std::to_string(double(Grid::kMaxUnits) / scale));
+  }
+  return std::int64_t(units);
+}
+
+}  // namespace
+
+void appendInputEdges(const Paths& paths, int operand, const Grid& grid,
+                      std::vector<InputEdge>& out) {
+  if (!(grid.scale > 0.0) || !std::isfinite(grid.scale)) {
+    throw InvalidInputError("grid scale must be positive and finite, got " +
+                            std::to_string(grid.scale));
+  }
+  std::vector<IPoint> ring;
+  for (std::size_t p = 0; p < paths.size(); ++p) {
+    ring.clear();
+    for (std::size_t i = 0; i < paths[p].size(); ++i) {
+      const IPoint q{snap(paths[p][i].x, grid.scale, "x", p, i, operand),
+                     snap(paths[p][i].y, grid.scale, "y", p, i, operand)};
+      if (ring.empty() || ring.back() != q) ring.push_back(q);
+    }
+    while (ring.size() > 1 && ring.back() == ring.front()) ring.pop_back();
+    if (ring.size() < 2) continue;  // a point encloses nothing
+    for (std::size_t i = 0; i < ring.size(); ++i) {
+      const IPoint s = ring[i];
+      const IPoint t = ring[(i + 1) % ring.size()];
+      if (s < t) {
+        out.push_back({s, t, +1, operand});
+      } else {
+        out.push_back({t, s, -1, operand});
+      }
+    }
+  }
+}
+
+}  // namespace roiclip::detail

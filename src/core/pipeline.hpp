@@ -1,0 +1,97 @@
+// roiclip private header: the stages of the clipping pipeline and the data passed between them.
+// boolean_op.cpp strings them together; each stage lives in its own file.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include <roiclip/geometry.hpp>
+
+#include "predicates.hpp"
+
+namespace roiclip::detail {
+
+/// Operand index: 0 = subject, 1 = clip.
+constexpr int kOperands = 2;
+using Windings = std::array<std::int64_t, kOperands>;
+
+/// One directed input edge on the grid, stored with a < b (lexicographically).
+struct InputEdge {
+  IPoint a, b;
+  int direction = 0;  ///< +1 when the input runs a -> b, -1 when it runs b -> a
+  int operand = 0;
+};
+
+/// Stage 0 (input.cpp): validate, snap to the grid, drop repeated points, emit the edges of
+/// every closed path. Throws InvalidInputError naming the path and vertex.
+void appendInputEdges(const Paths& paths, int operand, const Grid& grid,
+                      std::vector<InputEdge>& out);
+
+/// A piece of the planar arrangement: a maximal part of one or more coincident input edges
+/// that no other edge crosses or touches except at its two ends.
+struct EdgePiece {
+  int left = -1;        ///< vertex id of the lexicographically smaller end
+  int right = -1;       ///< vertex id of the other end
+  IPoint lineA, lineB;  ///< the grid segment it lies on (lineA < lineB)
+  /// Change of each operand's winding number from the side below the piece to the side above
+  /// (the sum of the directions of the coincident input edges).
+  Windings contribution{};
+  Windings windBelow{};  ///< winding numbers just below the piece
+  int below = -1;        ///< the piece directly below this one at its left end, or -1
+  [[nodiscard]] Windings windAbove() const {
+    return {windBelow[0] + contribution[0], windBelow[1] + contribution[1]};
+  }
+};
+
+/// The planar arrangement of all input edges: vertices in lexicographic order, pieces in the
+/// order the sweep met them (so a piece's `below` always has a smaller index).
+struct Arrangement {
+  std::vector<XPoint> vertices;
+  std::vector<EdgePiece> pieces;
+};
+
+/// Stage 1 (split_edges.cpp): sweep line over all edges. Finds every crossing, touching vertex
+/// and collinear overlap, splits edges there, merges coincident pieces and labels every piece
+/// with the winding numbers on both sides. O((n + k) log n) for n edges and k crossings.
+Arrangement splitEdges(const std::vector<InputEdge>& edges);
+
+/// Which side of a piece is filled in the result.
+enum class Side : std::uint8_t { None = 0, Above = 1, Below = 2 };
+
+/// What the boolean combination of the operands is.
+struct Combination {
+  bool binary = false;  ///< false: subject only (simplify)
+  ClipOp op = ClipOp::Intersection;
+  FillRule subjectRule = FillRule::EvenOdd;
+  FillRule clipRule = FillRule::EvenOdd;
+  [[nodiscard]] bool inside(const Windings& w) const;
+};
+
+/// Stage 2 (classify.cpp): the fill rule and operation decide, from the winding numbers on both
+/// sides, which pieces bound the result and on which side it lies. Pieces between regions of
+/// equal fill status are dropped here (the paper's "delete edges inside holes").
+std::vector<Side> classifyPieces(const Arrangement& arrangement, const Combination& combination);
+
+/// A closed ring traced from result pieces, filled on its left.
+struct TracedRing {
+  std::vector<int> vertices;  ///< vertex ids, each once; collinear vertices removed
+  int referencePiece = -1;    ///< its lowest piece at its leftmost vertex
+  bool hole = false;          ///< true when the region inside is not filled
+};
+
+/// Stage 3 (trace_contours.cpp): link result pieces into simple closed rings with the paper's
+/// stack method (push vertices; when a vertex repeats, pop a contour), filled side on the left,
+/// so outer rings run counter-clockwise in the raw frame and holes clockwise.
+struct Contours {
+  std::vector<TracedRing> rings;
+  std::vector<int> ringOfPiece;  ///< ring index of each result piece, -1 for the others
+};
+Contours traceContours(const Arrangement& arrangement, const std::vector<Side>& sides);
+
+/// Stage 4 (nesting.cpp): give each hole its outer ring and each outer ring the hole it lies
+/// in, and emit the polygons in image coordinates with roiclip's output orientation.
+PolygonSet buildNesting(const Arrangement& arrangement, const std::vector<Side>& sides,
+                        const Contours& contours, const Grid& grid);
+
+}  // namespace roiclip::detail

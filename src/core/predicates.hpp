@@ -1,0 +1,141 @@
+// roiclip private header: every numeric decision of the pipeline lives here.
+//
+// Robustness strategy (the one place it is decided):
+// - Input coordinates are snapped to integers ("grid units") with |v| <= 2^30 (Grid::kMaxUnits).
+// - Every vertex of the planar arrangement is either an input point (integer) or the crossing
+//   of two input segments, represented exactly in homogeneous form (X/W, Y/W) with
+//   |X|,|Y| < 2^96 and 0 < W < 2^64 (__int128).
+// - Predicates (orientation, lexicographic order, direction order) are exact: a double filter
+//   with a conservative error bound answers most calls; the rest are computed exactly with
+//   256-bit integers (Boost.Multiprecision). There is no epsilon in any topological decision.
+// - Every edge piece keeps the integer input segment it lies on ("supporting segment"), so
+//   intersections are always computed from integer data and the bit sizes above never grow.
+#pragma once
+
+#include <cmath>
+#include <cstdint>
+
+#include <boost/multiprecision/cpp_int.hpp>
+
+namespace roiclip::detail {
+
+using i128 = __int128;
+using i256 = boost::multiprecision::int256_t;
+
+/// A point on the integer grid.
+struct IPoint {
+  std::int64_t x = 0;
+  std::int64_t y = 0;
+  friend bool operator==(const IPoint& a, const IPoint& b) { return a.x == b.x && a.y == b.y; }
+  friend bool operator!=(const IPoint& a, const IPoint& b) { return !(a == b); }
+  friend bool operator<(const IPoint& a, const IPoint& b) {
+    return a.x < b.x || (a.x == b.x && a.y < b.y);
+  }
+};
+
+/// An exact point (X/W, Y/W), W > 0. Grid points have W == 1.
+struct XPoint {
+  i128 x = 0;
+  i128 y = 0;
+  i128 w = 1;
+  XPoint() = default;
+  XPoint(i128 px, i128 py, i128 pw) : x(px), y(py), w(pw) {}
+  explicit XPoint(IPoint p) : x(p.x), y(p.y), w(1) {}
+  [[nodiscard]] double dx() const { return w == 1 ? double(x) : double(x) / double(w); }
+  [[nodiscard]] double dy() const { return w == 1 ? double(y) : double(y) / double(w); }
+};
+
+inline i256 wide(i128 v) { return i256(v); }
+inline int signOf(i128 v) { return (v > 0) - (v < 0); }
+inline int signOf(const i256& v) { return v.sign(); }
+
+/// Sign of (b - a) x (c - a): +1 when c is to the left of a->b (counter-clockwise in the raw
+/// (x, y) frame), 0 when collinear. Exact for grid points.
+inline int orient(IPoint a, IPoint b, IPoint c) {
+  const i128 v = i128(b.x - a.x) * (c.y - a.y) - i128(b.y - a.y) * (c.x - a.x);
+  return signOf(v);
+}
+
+/// Orientation of an exact point against the line through grid points a, b.
+inline int orient(IPoint a, IPoint b, const XPoint& c) {
+  if (c.w == 1) return orient(a, b, IPoint{std::int64_t(c.x), std::int64_t(c.y)});
+  const double ux = double(b.x - a.x), uy = double(b.y - a.y);
+  const double cx = c.dx() - double(a.x), cy = c.dy() - double(a.y);
+  const double v = ux * cy - uy * cx;
+  // c.dx(), c.dy() carry a relative error below 2^-51; the bound covers that and the rounding of
+  // the subtractions and products with a wide margin.
+  const double bound = 1e-13 * (std::fabs(ux) * (std::fabs(c.dy()) + std::fabs(double(a.y))) +
+                                std::fabs(uy) * (std::fabs(c.dx()) + std::fabs(double(a.x))) + 1.0);
+  if (v > bound) return 1;
+  if (v < -bound) return -1;
+  const i256 ex = wide(c.x) - wide(a.x) * wide(c.w);
+  const i256 ey = wide(c.y) - wide(a.y) * wide(c.w);
+  return signOf(wide(b.x - a.x) * ey - wide(b.y - a.y) * ex);
+}
+
+/// Exact lexicographic comparison (x first, then y): -1, 0, +1.
+inline int compareCoord(i128 a, i128 aw, i128 b, i128 bw) {
+  if (aw == bw) return (a > b) - (a < b);
+  const double da = double(a) / double(aw), db = double(b) / double(bw);
+  const double bound = 1e-14 * (std::fabs(da) + std::fabs(db));
+  if (da - db > bound) return 1;
+  if (db - da > bound) return -1;
+  const i256 l = wide(a) * wide(bw), r = wide(b) * wide(aw);
+  return (l > r) - (l < r);
+}
+
+inline int compare(const XPoint& a, const XPoint& b) {
+  const int cx = compareCoord(a.x, a.w, b.x, b.w);
+  return cx != 0 ? cx : compareCoord(a.y, a.w, b.y, b.w);
+}
+inline bool equal(const XPoint& a, const XPoint& b) { return compare(a, b) == 0; }
+inline bool less(const XPoint& a, const XPoint& b) { return compare(a, b) < 0; }
+
+/// Sign of d1 x d2 for direction vectors of grid segments: +1 when d2 turns counter-clockwise
+/// from d1.
+inline int crossSign(IPoint d1, IPoint d2) {
+  return signOf(i128(d1.x) * d2.y - i128(d1.y) * d2.x);
+}
+
+inline i128 absI(i128 v) { return v < 0 ? -v : v; }
+inline i128 gcdI(i128 a, i128 b) {
+  a = absI(a);
+  b = absI(b);
+  while (b != 0) {
+    const i128 t = a % b;
+    a = b;
+    b = t;
+  }
+  return a;
+}
+
+/// Crossing point of the lines through grid segments (a, b) and (c, d). Returns false when the
+/// lines are parallel. The result is reduced, so crossings on the grid come back with W == 1.
+inline bool lineIntersection(IPoint a, IPoint b, IPoint c, IPoint d, XPoint& out) {
+  const i128 d1x = b.x - a.x, d1y = b.y - a.y, d2x = d.x - c.x, d2y = d.y - c.y;
+  i128 den = d1x * d2y - d1y * d2x;
+  if (den == 0) return false;
+  i128 num = i128(c.x - a.x) * d2y - i128(c.y - a.y) * d2x;
+  if (den < 0) {
+    den = -den;
+    num = -num;
+  }
+  // Reduce t = num / den first: keeps X, Y small and gives W == 1 for grid crossings.
+  const i128 g = gcdI(num, den);
+  if (g > 1) {
+    num /= g;
+    den /= g;
+  }
+  i128 x = i128(a.x) * den + d1x * num;
+  i128 y = i128(a.y) * den + d1y * num;
+  const i128 g2 = gcdI(gcdI(x, y), den);
+  if (g2 > 1) {
+    x /= g2;
+    y /= g2;
+    den /= g2;
+  }
+  out = XPoint(x, y, den);
+  return true;
+}
+
+}  // namespace roiclip::detail

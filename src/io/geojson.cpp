@@ -1,0 +1,2 @@
+// Placeholder until the GeoJSON reader lands.
+namespace roiclip::io {}

@@ -1,0 +1,2 @@
+// Placeholder until the OpenCV conversions land.
+namespace roiclip::opencv {}
