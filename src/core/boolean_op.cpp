@@ -44,8 +44,7 @@ PolygonSet intersect(const Paths& subject, const Paths& clipPaths, FillRule rule
 PolygonSet unite(const Paths& subject, const Paths& clipPaths, FillRule rule, const Grid& grid) {
   return clip(ClipOp::Union, subject, clipPaths, rule, rule, grid);
 }
-PolygonSet subtract(const Paths& subject, const Paths& clipPaths, FillRule rule,
-                    const Grid& grid) {
+PolygonSet subtract(const Paths& subject, const Paths& clipPaths, FillRule rule, const Grid& grid) {
   return clip(ClipOp::Difference, subject, clipPaths, rule, rule, grid);
 }
 PolygonSet symmetricDifference(const Paths& subject, const Paths& clipPaths, FillRule rule,

@@ -93,9 +93,7 @@ inline bool less(const XPoint& a, const XPoint& b) { return compare(a, b) < 0; }
 
 /// Sign of d1 x d2 for direction vectors of grid segments: +1 when d2 turns counter-clockwise
 /// from d1.
-inline int crossSign(IPoint d1, IPoint d2) {
-  return signOf(i128(d1.x) * d2.y - i128(d1.y) * d2.x);
-}
+inline int crossSign(IPoint d1, IPoint d2) { return signOf(i128(d1.x) * d2.y - i128(d1.y) * d2.x); }
 
 inline i128 absI(i128 v) { return v < 0 ? -v : v; }
 inline i128 gcdI(i128 a, i128 b) {

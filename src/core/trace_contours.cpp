@@ -92,7 +92,8 @@ Contours traceContours(const Arrangement& arrangement, const std::vector<Side>& 
       ring.referencePiece = std::min(inMin, outMin);
       ring.hole = sides[ring.referencePiece] == Side::Below;
       if (ring.vertices.size() < 3) throw InternalError("traceContours: degenerate ring");
-      for (std::size_t i = 0; i < n; ++i) result.ringOfPiece[stackE[k + i]] = int(result.rings.size());
+      for (std::size_t i = 0; i < n; ++i)
+        result.ringOfPiece[stackE[k + i]] = int(result.rings.size());
       result.rings.push_back(std::move(ring));
       for (std::size_t i = k + 1; i < stackV.size(); ++i) onStack[stackV[i]] = -1;
       stackV.resize(k + 1);

@@ -1,0 +1,273 @@
+// Independent oracles for core tests: exact winding numbers of the input at sample points,
+// point-in-result of the output, and structural checks of output rings. Nothing here uses the
+// library's own predicates or pipeline.
+#pragma once
+
+#include <cmath>
+#include <cstdint>
+#include <optional>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <roiclip/roiclip.hpp>
+
+namespace roiclip::testing {
+
+/// Sample points and test inputs live on dyadic grids: inputs on multiples of 1/256 px,
+/// sample points on multiples of 1/4096 px. Scaling both by 4096 makes every coordinate an
+/// integer, so winding numbers and "on an edge" tests are exact.
+constexpr double kOracleScale = 4096.0;
+
+inline std::int64_t toOracle(double v) { return std::llround(v * kOracleScale); }
+
+/// Exact winding number of `paths` around `p`, or nothing when p lies on an edge.
+inline std::optional<long long> exactWinding(const Paths& paths, Point p) {
+  const std::int64_t px = toOracle(p.x), py = toOracle(p.y);
+  long long w = 0;
+  for (const Path& path : paths) {
+    const std::size_t n = path.size();
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::int64_t ax = toOracle(path[i].x), ay = toOracle(path[i].y);
+      const std::int64_t bx = toOracle(path[(i + 1) % n].x), by = toOracle(path[(i + 1) % n].y);
+      const __int128 cr = __int128(bx - ax) * (py - ay) - __int128(by - ay) * (px - ax);
+      if (cr == 0 && std::min(ax, bx) <= px && px <= std::max(ax, bx) && std::min(ay, by) <= py &&
+          py <= std::max(ay, by)) {
+        return std::nullopt;  // on the boundary
+      }
+      if (ay <= py) {
+        if (by > py && cr > 0) ++w;
+      } else if (by <= py && cr < 0) {
+        --w;
+      }
+    }
+  }
+  return w;
+}
+
+/// Winding number of one ring around p in floating point (for output rings).
+inline int ringWinding(const Path& ring, Point p) {
+  int w = 0;
+  const std::size_t n = ring.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const Point a = ring[i], b = ring[(i + 1) % n];
+    const double cr = (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x);
+    if (a.y <= p.y) {
+      if (b.y > p.y && cr > 0) ++w;
+    } else if (b.y <= p.y && cr < 0) {
+      --w;
+    }
+  }
+  return w;
+}
+
+/// Distance from p to the nearest edge of any path.
+inline double distanceToEdges(const Paths& paths, Point p) {
+  double best = INFINITY;
+  for (const Path& path : paths) {
+    const std::size_t n = path.size();
+    for (std::size_t i = 0; i < n; ++i) {
+      const Point a = path[i], b = path[(i + 1) % n];
+      const Point d = b - a;
+      const double len2 = d.x * d.x + d.y * d.y;
+      double t = len2 > 0 ? ((p.x - a.x) * d.x + (p.y - a.y) * d.y) / len2 : 0.0;
+      t = std::max(0.0, std::min(1.0, t));
+      const Point q = a + t * d - p;
+      best = std::min(best, std::sqrt(q.x * q.x + q.y * q.y));
+    }
+  }
+  return best;
+}
+
+/// Structural problems of a result, empty when there are none: ring sizes, orientations,
+/// repeated vertices, crossing edges, parent links.
+inline std::string structureProblems(const PolygonSet& set) {
+  std::ostringstream out;
+  std::vector<const Path*> rings;
+  for (std::size_t i = 0; i < set.polygons.size(); ++i) {
+    const Polygon& p = set.polygons[i];
+    if (p.outer.size() < 3) out << "polygon " << i << ": outer ring has < 3 vertices\n";
+    if (!(signedArea(p.outer) < 0)) out << "polygon " << i << ": outer ring not negative\n";
+    for (std::size_t h = 0; h < p.holes.size(); ++h) {
+      if (p.holes[h].size() < 3) out << "polygon " << i << " hole " << h << ": < 3 vertices\n";
+      if (!(signedArea(p.holes[h]) > 0))
+        out << "polygon " << i << " hole " << h << ": not positive\n";
+    }
+    if (p.parent >= int(i)) out << "polygon " << i << ": parent does not come first\n";
+    if (p.parent >= 0 &&
+        (p.parentHole < 0 || p.parentHole >= int(set.polygons[p.parent].holes.size()))) {
+      out << "polygon " << i << ": bad parentHole\n";
+    }
+    rings.push_back(&p.outer);
+    for (const Path& h : p.holes) rings.push_back(&h);
+  }
+  // Every ring simple: no repeated vertex, no two edges crossing or overlapping (all rings
+  // against all, since rings may only touch at vertices). Quadratic: small results only.
+  struct Seg {
+    Point a, b;
+    std::size_t ring;
+  };
+  std::vector<Seg> segs;
+  for (std::size_t r = 0; r < rings.size(); ++r) {
+    const Path& ring = *rings[r];
+    for (std::size_t i = 0; i < ring.size(); ++i) {
+      for (std::size_t j = i + 1; j < ring.size(); ++j) {
+        if (ring[i] == ring[j]) out << "ring " << r << ": vertex " << i << " repeats\n";
+      }
+      segs.push_back({ring[i], ring[(i + 1) % ring.size()], r});
+    }
+  }
+  if (segs.size() > 4000) return out.str();
+  auto orient = [](Point a, Point b, Point c) {
+    const double v = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+    const double tol = 1e-9 * (std::fabs(b.x - a.x) + std::fabs(b.y - a.y)) *
+                       (std::fabs(c.x - a.x) + std::fabs(c.y - a.y) + 1.0);
+    return v > tol ? 1 : (v < -tol ? -1 : 0);
+  };
+  for (std::size_t i = 0; i < segs.size(); ++i) {
+    for (std::size_t j = i + 1; j < segs.size(); ++j) {
+      const Seg& s = segs[i];
+      const Seg& t = segs[j];
+      const int o1 = orient(s.a, s.b, t.a), o2 = orient(s.a, s.b, t.b);
+      const int o3 = orient(t.a, t.b, s.a), o4 = orient(t.a, t.b, s.b);
+      if (o1 * o2 < 0 && o3 * o4 < 0) {
+        out << "edges cross: ring " << s.ring << " and ring " << t.ring << "\n";
+        return out.str();
+      }
+      // Collinear overlap of positive length.
+      if (o1 == 0 && o2 == 0) {
+        const Point d = s.b - s.a;
+        auto proj = [&](Point q) { return (q - s.a).x * d.x + (q - s.a).y * d.y; };
+        const double len = proj(s.b);
+        const double lo = std::max(0.0, std::min(proj(t.a), proj(t.b)));
+        const double hi = std::min(len, std::max(proj(t.a), proj(t.b)));
+        if (hi - lo > 1e-9 * len) {
+          out << "edges overlap: ring " << s.ring << " and ring " << t.ring << "\n";
+          return out.str();
+        }
+      }
+    }
+  }
+  return out.str();
+}
+
+/// Result of checking a result against the expected region at sample points.
+struct SampleReport {
+  int checked = 0;
+  int mismatches = 0;
+  std::string firstMismatch;
+};
+
+/// Compares, at `samples` random points in the box [lo, hi]^2 (multiples of 1/4096 px, off
+/// every input edge), whether p is in the result with what `expected(p)` says, where the
+/// expected function gets exact winding numbers. Also checks per-polygon windings are 0 or 1
+/// and that islands lie in their parent hole.
+template <class Expected>
+SampleReport sampleRegion(const PolygonSet& result, const std::vector<const Paths*>& inputs,
+                          Expected expected, double lo, double hi, int samples,
+                          std::uint32_t seed) {
+  SampleReport report;
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> coord(lo, hi);
+  for (int s = 0; s < samples; ++s) {
+    const Point p{std::round(coord(rng) * kOracleScale) / kOracleScale,
+                  std::round(coord(rng) * kOracleScale) / kOracleScale};
+    std::vector<long long> w;
+    bool onEdge = false;
+    for (const Paths* in : inputs) {
+      const auto wi = exactWinding(*in, p);
+      if (!wi) {
+        onEdge = true;
+        break;
+      }
+      if (distanceToEdges(*in, p) < 1e-6) onEdge = true;
+      w.push_back(*wi);
+    }
+    if (onEdge) continue;
+    ++report.checked;
+    int inside = 0;
+    for (std::size_t i = 0; i < result.polygons.size(); ++i) {
+      const Polygon& poly = result.polygons[i];
+      int wp = -ringWinding(poly.outer, p);
+      for (const Path& h : poly.holes) wp -= ringWinding(h, p);
+      if (wp != 0 && wp != 1) {
+        ++report.mismatches;
+        report.firstMismatch = "polygon winding not 0/1";
+      }
+      if (wp == 1 && poly.parent >= 0) {
+        const Path& hole = result.polygons[poly.parent].holes[poly.parentHole];
+        if (ringWinding(hole, p) == 0) {
+          ++report.mismatches;
+          report.firstMismatch = "island outside its parent hole";
+        }
+      }
+      inside += wp;
+    }
+    const bool want = expected(w);
+    if ((inside == 1) != want || (inside != 0 && inside != 1)) {
+      ++report.mismatches;
+      if (report.firstMismatch.empty()) {
+        std::ostringstream m;
+        m << "at (" << p.x << ", " << p.y << ") expected " << want << " got winding " << inside;
+        report.firstMismatch = m.str();
+      }
+    }
+  }
+  return report;
+}
+
+/// Random polygon generators (fixed seeds by the caller).
+inline Path randomPolygon(std::mt19937& rng, int n, int size) {
+  std::uniform_int_distribution<int> c(0, size);
+  Path p;
+  for (int i = 0; i < n; ++i) p.emplace_back(c(rng), c(rng));
+  return p;
+}
+
+/// A random walk on the integer grid: steps of -1/0/+1 scaled by `step`; many collinear,
+/// touching and overlapping edges. Closed implicitly.
+inline Path randomGridWalk(std::mt19937& rng, int n, int step, int size) {
+  std::uniform_int_distribution<int> d(-1, 1);
+  Path p;
+  int x = size / 2, y = size / 2;
+  for (int i = 0; i < n; ++i) {
+    x = std::max(0, std::min(size, x + step * d(rng)));
+    y = std::max(0, std::min(size, y + step * d(rng)));
+    p.emplace_back(x, y);
+  }
+  return p;
+}
+
+/// An OpenCV-like closed pixel chain: 8-connected unit steps with a drift back to the start.
+inline Path pixelChain(std::mt19937& rng, int n) {
+  Path p;
+  int x = 0, y = 0;
+  std::uniform_int_distribution<int> d(-1, 1);
+  for (int i = 0; i < n; ++i) {
+    int dx = d(rng), dy = d(rng);
+    const int remaining = n - i;
+    if (std::abs(x) >= remaining - 1) dx = x > 0 ? -1 : (x < 0 ? 1 : 0);
+    if (std::abs(y) >= remaining - 1) dy = y > 0 ? -1 : (y < 0 ? 1 : 0);
+    x += dx;
+    y += dy;
+    p.emplace_back(x, y);
+  }
+  return p;
+}
+
+inline std::string describe(const Paths& paths) {
+  std::ostringstream out;
+  out << "[";
+  for (std::size_t i = 0; i < paths.size(); ++i) {
+    out << (i ? "," : "") << "[";
+    for (std::size_t j = 0; j < paths[i].size(); ++j) {
+      out << (j ? "," : "") << "[" << paths[i][j].x << "," << paths[i][j].y << "]";
+    }
+    out << "]";
+  }
+  out << "]";
+  return out.str();
+}
+
+}  // namespace roiclip::testing
