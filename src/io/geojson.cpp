@@ -1,2 +1,316 @@
-// Placeholder until the GeoJSON reader lands.
-namespace roiclip::io {}
+// GeoJSON / plain JSON path sets. nlohmann-json does the parsing and printing; this file only
+// walks the structure and says precisely where it is wrong.
+#include <roiclip/io/geojson.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <utility>
+
+#include <nlohmann/json.hpp>
+
+namespace roiclip::io {
+namespace {
+
+using nlohmann::json;
+
+[[noreturn]] void fail(const std::string& source, const std::string& where,
+                       const std::string& problem) {
+  throw InvalidInputError(source + ": " + (where.empty() ? "" : where + ": ") + problem);
+}
+
+std::string typeName(const json& j) { return j.type_name(); }
+
+json parseJson(const std::string& text, const std::string& source) {
+  try {
+    return json::parse(text);
+  } catch (const json::parse_error& e) {
+    // e.what() is "[json.exception.parse_error.101] parse error at line 1, column 2: ...".
+    std::string what = e.what();
+    const auto pos = what.find("] ");
+    if (pos != std::string::npos) what = what.substr(pos + 2);
+    fail(source, "", "not valid JSON (" + what + ")");
+  }
+}
+
+std::string readFile(const std::string& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) fail(file, "", "cannot open file for reading");
+  std::ostringstream buffer;
+  buffer << in.rdbuf();
+  if (in.bad()) fail(file, "", "read error");
+  return buffer.str();
+}
+
+// Reads rings and remembers how many paths came before, so a ring's message can also give the
+// flat path index the core uses in its own messages.
+class RingReader {
+ public:
+  RingReader(const std::string& source, const ReadOptions& options)
+      : source_(source), options_(options) {}
+
+  Path readRing(const json& ring, const std::string& where, bool dropClosingPoint) {
+    const std::string at = where + " (path " + std::to_string(pathCount_) + ")";
+    if (!ring.is_array()) fail(source_, at, "expected an array of points, got " + typeName(ring));
+    Path path;
+    path.reserve(ring.size());
+    for (std::size_t i = 0; i < ring.size(); ++i) {
+      const json& point = ring[i];
+      const std::string pointAt = at + ", point " + std::to_string(i);
+      if (!point.is_array() || point.size() < 2 || point.size() > 3) {
+        fail(source_, pointAt,
+             "expected [x, y] (or [x, y, z]), got " +
+                 (point.is_array() ? "an array of " + std::to_string(point.size()) + " values"
+                                   : typeName(point)));
+      }
+      double xy[2];
+      for (int k = 0; k < 2; ++k) {
+        const json& value = point[std::size_t(k)];
+        const char* axis = k == 0 ? "x" : "y";
+        if (!value.is_number()) {
+          fail(source_, pointAt, std::string(axis) + " is not a number (" + typeName(value) + ")");
+        }
+        xy[k] = value.get<double>();
+        // JSON has no NaN, but a huge literal such as 1e999 parses to infinity.
+        if (!std::isfinite(xy[k])) fail(source_, pointAt, std::string(axis) + " is not finite");
+      }
+      path.emplace_back(xy[0], xy[1]);
+    }
+    if (dropClosingPoint && path.size() > 1 && path.front() == path.back()) path.pop_back();
+    if (!options_.allowDegenerateRings && distinctPoints(path) < 3) {
+      fail(source_, at, "ring has fewer than 3 distinct points");
+    }
+    ++pathCount_;
+    return path;
+  }
+
+  // Polygon coordinates: an array of rings, outer first.
+  Paths readPolygon(const json& rings, const std::string& where) {
+    if (!rings.is_array())
+      fail(source_, where, "expected an array of rings, got " + typeName(rings));
+    if (rings.empty()) fail(source_, where, "polygon has no rings");
+    Paths out;
+    out.reserve(rings.size());
+    for (std::size_t r = 0; r < rings.size(); ++r) {
+      out.push_back(readRing(rings[r], where + ", ring " + std::to_string(r), true));
+    }
+    return out;
+  }
+
+  std::vector<Paths> readGeometry(const json& geometry, const std::string& where) {
+    std::vector<Paths> polygons;
+    if (geometry.is_null()) return polygons;  // GeoJSON allows features without geometry
+    if (!geometry.is_object()) fail(source_, where, "geometry must be an object or null");
+    const std::string type = memberType(geometry, where);
+    const auto coords = geometry.find("coordinates");
+    if (type == "Polygon" || type == "MultiPolygon") {
+      if (coords == geometry.end()) fail(source_, where, type + " without \"coordinates\"");
+    }
+    if (type == "Polygon") {
+      polygons.push_back(readPolygon(*coords, where + ", polygon 0"));
+    } else if (type == "MultiPolygon") {
+      if (!coords->is_array()) fail(source_, where, "MultiPolygon coordinates must be an array");
+      for (std::size_t p = 0; p < coords->size(); ++p) {
+        polygons.push_back(readPolygon((*coords)[p], where + ", polygon " + std::to_string(p)));
+      }
+    } else {
+      fail(source_, where,
+           "unsupported geometry type \"" + type + "\" (expected Polygon or MultiPolygon)");
+    }
+    return polygons;
+  }
+
+  Feature readFeature(const json& feature, const std::string& where) {
+    Feature out;
+    const auto geometry = feature.find("geometry");
+    if (geometry == feature.end()) fail(source_, where, "Feature without \"geometry\"");
+    out.polygons = readGeometry(*geometry, where);
+    const auto properties = feature.find("properties");
+    if (properties != feature.end() && properties->is_object()) {
+      for (const auto& [key, value] : properties->items()) {
+        if (value.is_string()) out.properties[key] = value.get<std::string>();
+      }
+    }
+    return out;
+  }
+
+  std::vector<Feature> readGeoJson(const json& root) {
+    if (!root.is_object()) {
+      fail(source_, "", "expected a JSON object at the top level, got " + typeName(root));
+    }
+    const std::string type = memberType(root, "");
+    std::vector<Feature> features;
+    if (type == "FeatureCollection") {
+      const auto list = root.find("features");
+      if (list == root.end() || !list->is_array()) {
+        fail(source_, "", "FeatureCollection without a \"features\" array");
+      }
+      for (std::size_t f = 0; f < list->size(); ++f) {
+        const std::string where = "feature " + std::to_string(f);
+        const json& feature = (*list)[f];
+        if (!feature.is_object() || memberType(feature, where) != "Feature") {
+          fail(source_, where, "expected an object of type \"Feature\"");
+        }
+        features.push_back(readFeature(feature, where));
+      }
+    } else if (type == "Feature") {
+      features.push_back(readFeature(root, "feature"));
+    } else {
+      Feature feature;
+      feature.polygons = readGeometry(root, "geometry");
+      features.push_back(std::move(feature));
+    }
+    return features;
+  }
+
+  Paths readPlain(const json& root) {
+    const json& list = root.at("paths");
+    if (!list.is_array()) fail(source_, "", "\"paths\" must be an array of paths");
+    Paths out;
+    out.reserve(list.size());
+    for (std::size_t p = 0; p < list.size(); ++p) {
+      pathCount_ = p;
+      out.push_back(readRing(list[p], "path " + std::to_string(p), true));
+    }
+    return out;
+  }
+
+ private:
+  std::string memberType(const json& object, const std::string& where) const {
+    const auto type = object.find("type");
+    if (type == object.end() || !type->is_string()) {
+      fail(source_, where, "missing GeoJSON \"type\" (or a plain {\"paths\": [...]} object)");
+    }
+    return type->get<std::string>();
+  }
+
+  static std::size_t distinctPoints(const Path& path) {
+    // Rings are short in practice and this runs once per ring: a quadratic count is fine and
+    // keeps the original order untouched.
+    std::size_t count = 0;
+    for (std::size_t i = 0; i < path.size() && count < 3; ++i) {
+      bool seen = false;
+      for (std::size_t j = 0; j < i && !seen; ++j) seen = path[j] == path[i];
+      if (!seen) ++count;
+    }
+    return count;
+  }
+
+  const std::string& source_;
+  const ReadOptions& options_;
+  std::size_t pathCount_ = 0;
+};
+
+bool isPlain(const json& root) {
+  return root.is_object() && root.contains("paths") && !root.contains("type");
+}
+
+json ringJson(const Path& ring) {
+  json out = json::array();
+  for (const Point& p : ring) out.push_back({p.x, p.y});
+  if (!ring.empty()) out.push_back({ring.front().x, ring.front().y});
+  return out;
+}
+
+// The core names the operand ("subject path 3, vertex 1: ..."); swap that word for the source.
+[[noreturn]] void rethrowWithSource(const InvalidInputError& e, const std::string& subjectSource,
+                                    const std::string* clipSource) {
+  std::string message = e.what();
+  const std::string subjectWord = "subject ";
+  const std::string clipWord = "clip ";
+  if (message.rfind(subjectWord, 0) == 0) {
+    throw InvalidInputError(subjectSource + ": " + message.substr(subjectWord.size()));
+  }
+  if (clipSource != nullptr && message.rfind(clipWord, 0) == 0) {
+    throw InvalidInputError(*clipSource + ": " + message.substr(clipWord.size()));
+  }
+  throw InvalidInputError(subjectSource + (clipSource ? ", " + *clipSource : "") + ": " + message);
+}
+
+}  // namespace
+
+Paths parsePaths(const std::string& text, const std::string& source, const ReadOptions& options) {
+  const json root = parseJson(text, source);
+  RingReader reader(source, options);
+  if (isPlain(root)) return reader.readPlain(root);
+  Paths out;
+  for (Feature& feature : reader.readGeoJson(root)) {
+    for (Paths& polygon : feature.polygons) {
+      for (Path& ring : polygon) out.push_back(std::move(ring));
+    }
+  }
+  return out;
+}
+
+Paths readPaths(const std::string& file, const ReadOptions& options) {
+  return parsePaths(readFile(file), file, options);
+}
+
+std::vector<Feature> parseFeatures(const std::string& text, const std::string& source,
+                                   const ReadOptions& options) {
+  const json root = parseJson(text, source);
+  if (isPlain(root)) fail(source, "", "expected GeoJSON, got a plain {\"paths\": ...} object");
+  RingReader reader(source, options);
+  return reader.readGeoJson(root);
+}
+
+std::vector<Feature> readFeatures(const std::string& file, const ReadOptions& options) {
+  return parseFeatures(readFile(file), file, options);
+}
+
+std::string toGeoJson(const PolygonSet& set, int indent) {
+  json polygons = json::array();
+  for (const Polygon& polygon : set.polygons) {
+    json rings = json::array();
+    rings.push_back(ringJson(polygon.outer));
+    for (const Path& hole : polygon.holes) rings.push_back(ringJson(hole));
+    polygons.push_back(std::move(rings));
+  }
+  json feature = {{"type", "Feature"},
+                  {"properties", {{"area", set.area()}, {"rings", set.ringCount()}}},
+                  {"geometry", {{"type", "MultiPolygon"}, {"coordinates", std::move(polygons)}}}};
+  json root = {{"type", "FeatureCollection"}, {"features", json::array({std::move(feature)})}};
+  return root.dump(indent) + "\n";
+}
+
+void writeGeoJson(const PolygonSet& set, const std::string& file, int indent) {
+  const std::string text = toGeoJson(set, indent);
+  // Same folder as the target so that the rename cannot cross file systems.
+  const std::string temp = file + ".tmp";
+  {
+    std::ofstream out(temp, std::ios::binary | std::ios::trunc);
+    if (!out) throw Error(file + ": cannot open " + temp + " for writing");
+    out << text;
+    out.close();
+    if (!out) {
+      std::remove(temp.c_str());
+      throw Error(file + ": write error");
+    }
+  }
+  if (std::rename(temp.c_str(), file.c_str()) != 0) {
+    std::remove(temp.c_str());
+    throw Error(file + ": cannot rename " + temp + " into place");
+  }
+}
+
+PolygonSet simplifyInput(const Paths& paths, const std::string& source, FillRule rule,
+                         const Grid& grid) {
+  try {
+    return simplify(paths, rule, grid);
+  } catch (const InvalidInputError& e) {
+    rethrowWithSource(e, source, nullptr);
+  }
+}
+
+PolygonSet clipInputs(ClipOp op, const Paths& subject, const std::string& subjectSource,
+                      const Paths& clipPaths, const std::string& clipSource, FillRule subjectRule,
+                      FillRule clipRule, const Grid& grid) {
+  try {
+    return clip(op, subject, clipPaths, subjectRule, clipRule, grid);
+  } catch (const InvalidInputError& e) {
+    rethrowWithSource(e, subjectSource, &clipSource);
+  }
+}
+
+}  // namespace roiclip::io
