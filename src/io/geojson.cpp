@@ -25,8 +25,9 @@ std::string typeName(const json& j) { return j.type_name(); }
 json parseJson(const std::string& text, const std::string& source) {
   try {
     return json::parse(text);
-  } catch (const json::parse_error& e) {
-    // e.what() is "[json.exception.parse_error.101] parse error at line 1, column 2: ...".
+  } catch (const json::exception& e) {
+    // e.what() is "[json.exception.parse_error.101] parse error at line 1, column 2: ..."; number
+    // overflow (1e999) is reported as out_of_range.406.
     std::string what = e.what();
     const auto pos = what.find("] ");
     if (pos != std::string::npos) what = what.substr(pos + 2);
@@ -51,7 +52,9 @@ class RingReader {
       : source_(source), options_(options) {}
 
   Path readRing(const json& ring, const std::string& where, bool dropClosingPoint) {
-    const std::string at = where + " (path " + std::to_string(pathCount_) + ")";
+    // Nested GeoJSON rings also get their flat index: the core's messages use it.
+    const std::string at =
+        where.rfind("path ", 0) == 0 ? where : where + " (path " + std::to_string(pathCount_) + ")";
     if (!ring.is_array()) fail(source_, at, "expected an array of points, got " + typeName(ring));
     Path path;
     path.reserve(ring.size());
@@ -72,7 +75,8 @@ class RingReader {
           fail(source_, pointAt, std::string(axis) + " is not a number (" + typeName(value) + ")");
         }
         xy[k] = value.get<double>();
-        // JSON has no NaN, but a huge literal such as 1e999 parses to infinity.
+        // JSON has no NaN or infinity and nlohmann rejects 1e999; checked anyway so that no
+        // non-finite value can reach the core whatever the parser accepts.
         if (!std::isfinite(xy[k])) fail(source_, pointAt, std::string(axis) + " is not finite");
       }
       path.emplace_back(xy[0], xy[1]);

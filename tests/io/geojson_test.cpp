@@ -1,0 +1,247 @@
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <initializer_list>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <roiclip/io/geojson.hpp>
+
+namespace roiclip::io {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+const std::string kData = std::string(ROICLIP_TEST_DATA) + "/io/";
+
+// Runs `f`, requires an InvalidInputError and every fragment in its message.
+void expectInvalid(const std::function<void()>& f, std::initializer_list<std::string> fragments) {
+  try {
+    f();
+    ADD_FAILURE() << "no InvalidInputError thrown";
+  } catch (const InvalidInputError& e) {
+    const std::string message = e.what();
+    for (const std::string& fragment : fragments) {
+      EXPECT_NE(message.find(fragment), std::string::npos)
+          << "message \"" << message << "\" lacks \"" << fragment << "\"";
+    }
+    EXPECT_EQ(message.find('\n'), std::string::npos) << "message must be one line: " << message;
+  }
+}
+
+std::string uniqueTempDir(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / ("roiclip_io_test_" + name);
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir.string();
+}
+
+TEST(ParsePaths, PolygonDropsClosingPoint) {
+  const Paths paths = parsePaths(R"({"type":"Polygon","coordinates":[[[0,0],[4,0],[4,3],[0,0]]]})");
+  ASSERT_EQ(paths.size(), 1u);
+  ASSERT_EQ(paths[0].size(), 3u);
+  EXPECT_EQ(paths[0][1], Point(4, 0));
+  EXPECT_EQ(paths[0][2], Point(4, 3));
+}
+
+TEST(ParsePaths, PlainJsonNeedsNoClosingPoint) {
+  const Paths open = parsePaths(R"({"paths":[[[0,0],[4,0],[4,3]],[[1,1],[2,1],[2,2],[1,1]]]})");
+  ASSERT_EQ(open.size(), 2u);
+  EXPECT_EQ(open[0].size(), 3u);
+  EXPECT_EQ(open[1].size(), 3u);  // a repeated first point is dropped as well
+}
+
+TEST(ParsePaths, AcceptsAltitudeAndKeepsDoubles) {
+  const Paths paths =
+      parsePaths(R"({"type":"Polygon","coordinates":[[[0.125,-7.5,3],[4e-3,0,1],[4,3,2]]]})");
+  ASSERT_EQ(paths.size(), 1u);
+  EXPECT_EQ(paths[0][0], Point(0.125, -7.5));
+  EXPECT_EQ(paths[0][1], Point(4e-3, 0));
+}
+
+TEST(ReadPaths, EveryRingOfEveryFeatureIsOnePath) {
+  const Paths paths = readPaths(kData + "frame.geojson");
+  ASSERT_EQ(paths.size(), 3u);  // outer + hole of polygon 0, outer of polygon 1; null geometry
+  for (const Path& p : paths) EXPECT_EQ(p.size(), 4u);
+  // Rings are taken as-is: even-odd makes the inner square a hole whatever its orientation.
+  EXPECT_DOUBLE_EQ(simplify(paths, FillRule::EvenOdd).area(), 100.0 - 36.0 + 100.0);
+}
+
+TEST(ReadPaths, FeatureAndPlainFiles) {
+  const Paths roi = readPaths(kData + "roi.geojson");
+  ASSERT_EQ(roi.size(), 1u);
+  EXPECT_EQ(roi[0].size(), 4u);
+  const Paths bowtie = readPaths(kData + "bowtie.json");
+  ASSERT_EQ(bowtie.size(), 1u);
+  EXPECT_EQ(bowtie[0].size(), 4u);
+  // Each triangle of the bow-tie keeps the part x in [2, 5] (or [5, 8]): 25 - 16.
+  EXPECT_DOUBLE_EQ(intersect(bowtie, roi).area(), 2 * (25.0 - 16.0));
+}
+
+TEST(ReadPaths, FillRuleDecidesForRepeatedRings) {
+  const Paths twice = readPaths(kData + "twice_wound.json");
+  EXPECT_DOUBLE_EQ(simplify(twice, FillRule::NonZero).area(), 100.0);
+  EXPECT_DOUBLE_EQ(simplify(twice, FillRule::EvenOdd).area(), 0.0);
+}
+
+TEST(ReadFeatures, KeepsPolygonsRingsAndStringProperties) {
+  const std::vector<Feature> features = readFeatures(kData + "frame.geojson");
+  ASSERT_EQ(features.size(), 2u);
+  ASSERT_EQ(features[0].polygons.size(), 2u);
+  EXPECT_EQ(features[0].polygons[0].size(), 2u);
+  EXPECT_EQ(features[0].polygons[1].size(), 1u);
+  EXPECT_EQ(features[0].properties.at("operation"), "frame");
+  EXPECT_TRUE(features[1].polygons.empty());
+  const std::vector<Feature> lone = readFeatures(kData + "square.geojson");
+  ASSERT_EQ(lone.size(), 1u);
+  ASSERT_EQ(lone[0].polygons.size(), 1u);
+  EXPECT_EQ(lone[0].polygons[0][0].size(), 4u);
+}
+
+TEST(ReadFeatures, RejectsPlainPaths) {
+  expectInvalid([] { readFeatures(kData + "bowtie.json"); }, {"bowtie.json", "expected GeoJSON"});
+}
+
+TEST(ToGeoJson, FeatureCollectionWithClosedRingsAreaAndRingCount) {
+  const Paths frame = readPaths(kData + "frame.geojson");
+  const PolygonSet set = simplify(frame, FillRule::EvenOdd);
+  const json root = json::parse(toGeoJson(set));
+  EXPECT_EQ(root.at("type"), "FeatureCollection");
+  ASSERT_EQ(root.at("features").size(), 1u);
+  const json& feature = root.at("features")[0];
+  EXPECT_EQ(feature.at("type"), "Feature");
+  EXPECT_DOUBLE_EQ(feature.at("properties").at("area").get<double>(), set.area());
+  EXPECT_EQ(feature.at("properties").at("rings").get<std::size_t>(), set.ringCount());
+  const json& geometry = feature.at("geometry");
+  EXPECT_EQ(geometry.at("type"), "MultiPolygon");
+  const json& polygons = geometry.at("coordinates");
+  ASSERT_EQ(polygons.size(), set.polygons.size());
+  for (std::size_t p = 0; p < set.polygons.size(); ++p) {
+    ASSERT_EQ(polygons[p].size(), 1 + set.polygons[p].holes.size());
+    for (std::size_t r = 0; r < polygons[p].size(); ++r) {
+      const json& ring = polygons[p][r];
+      const Path& expected = r == 0 ? set.polygons[p].outer : set.polygons[p].holes[r - 1];
+      ASSERT_EQ(ring.size(), expected.size() + 1);
+      EXPECT_EQ(ring.front(), ring.back()) << "GeoJSON rings repeat their first point";
+      EXPECT_EQ(ring[1][0].get<double>(), expected[1].x);
+      EXPECT_EQ(ring[1][1].get<double>(), expected[1].y);
+    }
+  }
+  // Reading the output back gives the same region, with the same orientations.
+  const Paths back = parsePaths(toGeoJson(set, 2));
+  EXPECT_EQ(back, set.toPaths());
+}
+
+TEST(ToGeoJson, EmptySetIsAnEmptyMultiPolygon) {
+  const json root = json::parse(toGeoJson(PolygonSet{}));
+  const json& feature = root.at("features")[0];
+  EXPECT_TRUE(feature.at("geometry").at("coordinates").empty());
+  EXPECT_EQ(feature.at("properties").at("rings"), 0);
+  EXPECT_EQ(feature.at("properties").at("area"), 0.0);
+}
+
+TEST(WriteGeoJson, WritesFileAndLeavesNoTemporary) {
+  const std::string dir = uniqueTempDir("write");
+  const std::string file = dir + "/out.geojson";
+  const PolygonSet set = simplify(readPaths(kData + "square.geojson"), FillRule::NonZero);
+  writeGeoJson(set, file);
+  EXPECT_DOUBLE_EQ(simplify(readPaths(file), FillRule::NonZero).area(), 100.0);
+  std::size_t entries = 0;
+  for ([[maybe_unused]] const auto& entry : fs::directory_iterator(dir)) ++entries;
+  EXPECT_EQ(entries, 1u);
+  fs::remove_all(dir);
+}
+
+TEST(WriteGeoJson, UnwritableFolderThrowsAndWritesNothing) {
+  const std::string dir = uniqueTempDir("nowrite");
+  const std::string file = dir + "/missing/out.geojson";
+  EXPECT_THROW(writeGeoJson(PolygonSet{}, file), Error);
+  EXPECT_FALSE(fs::exists(file));
+  fs::remove_all(dir);
+}
+
+// --- errors: every one names the input and the problem ---
+
+TEST(ReadErrors, MissingFile) {
+  expectInvalid([] { readPaths(kData + "no_such_file.json"); },
+                {"no_such_file.json", "cannot open"});
+}
+
+TEST(ReadErrors, UnparsableJson) {
+  expectInvalid([] { readPaths(kData + "bad_syntax.json"); },
+                {"bad_syntax.json", "not valid JSON", "line 1"});
+  expectInvalid([] { parsePaths("", "empty.json"); }, {"empty.json", "not valid JSON"});
+}
+
+TEST(ReadErrors, WrongStructure) {
+  expectInvalid([] { readPaths(kData + "bad_structure.json"); },
+                {"bad_structure.json", "unsupported geometry type \"LineString\""});
+  expectInvalid([] { parsePaths("[1, 2]", "a.json"); }, {"a.json", "expected a JSON object"});
+  expectInvalid([] { parsePaths(R"({"foo": 1})", "b.json"); }, {"b.json", "\"type\""});
+  expectInvalid([] { parsePaths(R"({"type":"Polygon"})", "c.json"); },
+                {"c.json", "without \"coordinates\""});
+  expectInvalid([] { parsePaths(R"({"type":"FeatureCollection"})", "d.json"); },
+                {"d.json", "\"features\""});
+  expectInvalid([] { parsePaths(R"({"type":"Feature","properties":{}})", "e.json"); },
+                {"e.json", "without \"geometry\""});
+  expectInvalid([] { parsePaths(R"({"paths": {"a": 1}})", "f.json"); },
+                {"f.json", "\"paths\" must be an array"});
+  expectInvalid([] { parsePaths(R"({"paths": [[[0,0],[1],[1,1]]]})", "g.json"); },
+                {"g.json", "path 0, point 1", "expected [x, y]"});
+  expectInvalid([] { parsePaths(R"({"type":"Polygon","coordinates":[]})", "h.json"); },
+                {"h.json", "polygon has no rings"});
+  expectInvalid([] { parsePaths(R"({"type":"Polygon","coordinates":[5]})", "i.json"); },
+                {"i.json", "ring 0", "expected an array of points"});
+}
+
+TEST(ReadErrors, StringOrNullWhereANumberBelongs) {
+  expectInvalid([] { readPaths(kData + "string_coordinate.json"); },
+                {"string_coordinate.json", "path 0, point 2", "y is not a number"});
+  expectInvalid([] { readPaths(kData + "null_coordinate.geojson"); },
+                {"null_coordinate.geojson", "polygon 0, ring 1", "point 1", "x is not a number"});
+}
+
+TEST(ReadErrors, InfiniteLiteral) {
+  expectInvalid([] { parsePaths(R"({"paths": [[[0,0],[1e999,0],[1,1]]]})", "inf.json"); },
+                {"inf.json", "not valid JSON", "1e999"});
+}
+
+TEST(ReadErrors, RingWithFewerThanThreeDistinctPoints) {
+  expectInvalid([] { readPaths(kData + "degenerate_ring.geojson"); },
+                {"degenerate_ring.geojson", "polygon 1, ring 0", "(path 1)", "fewer than 3"});
+  expectInvalid([] { parsePaths(R"({"paths": [[[0,0],[1,0],[1,1]], [[2,2],[3,3]]]})", "p.json"); },
+                {"p.json", "path 1", "fewer than 3"});
+  ReadOptions lenient;
+  lenient.allowDegenerateRings = true;
+  const Paths kept = readPaths(kData + "degenerate_ring.geojson", lenient);
+  ASSERT_EQ(kept.size(), 2u);
+  EXPECT_EQ(kept[1].size(), 4u);
+  EXPECT_DOUBLE_EQ(simplify(kept, FillRule::EvenOdd).area(), 50.0);
+}
+
+TEST(ReadErrors, CoordinateOutOfRangeNamesFileAndPath) {
+  const std::string file = kData + "out_of_range.json";
+  const Paths paths = readPaths(file);
+  expectInvalid([&] { simplifyInput(paths, file, FillRule::NonZero); },
+                {"out_of_range.json", "path 1, vertex 1", "outside the supported range"});
+  const Paths square = readPaths(kData + "square.geojson");
+  expectInvalid(
+      [&] {
+        clipInputs(ClipOp::Intersection, square, "square.geojson", paths, file, FillRule::EvenOdd,
+                   FillRule::EvenOdd);
+      },
+      {"out_of_range.json", "path 1, vertex 1"});
+  expectInvalid(
+      [&] {
+        clipInputs(ClipOp::Union, paths, file, square, "square.geojson", FillRule::EvenOdd,
+                   FillRule::EvenOdd);
+      },
+      {"out_of_range.json: path 1, vertex 1"});
+}
+
+}  // namespace
+}  // namespace roiclip::io
