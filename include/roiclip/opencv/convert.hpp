@@ -1,0 +1,103 @@
+// roiclip::opencv conversions between OpenCV contours and roiclip paths / polygon sets.
+//
+// Pixel convention (the same as OpenCV and the rest of roiclip): x right, y down, (0,0) is the
+// centre of the top-left pixel. A contour from cv::findContours runs through the centres of the
+// boundary pixels, so the polygon it describes covers only half of each boundary pixel; see
+// rasterize.hpp for which pixels a polygon covers.
+#pragma once
+
+#include <vector>
+
+#include <opencv2/core.hpp>
+#include <opencv2/imgproc.hpp>  // cv::LINE_8
+
+#include <roiclip/roiclip.hpp>
+
+namespace roiclip::opencv {
+
+/// Default number of fractional bits for fixed-point drawing (cv::fillPoly's `shift`).
+/// 8 bits = 1/256 px, the same as roiclip's default Grid, so drawing loses nothing the core kept.
+constexpr int kDefaultShift = 8;
+
+/// Convert one contour to a roiclip path.
+/// @param contour a cv::Mat or std::vector of 2-channel points: CV_32SC2 (cv::Point), CV_32FC2
+///        (cv::Point2f) or CV_64FC2 (cv::Point2d); an N x 1, 1 x N or N x 2 single-channel matrix
+///        of the same depths is accepted as cv::Mat::checkVector(2) allows it. Empty is allowed.
+/// @return the points in order (the path is closed implicitly).
+/// @throws InvalidInputError if the type is not one of the above or a coordinate is NaN or
+///         infinite; the message names the contour (as "contour 0") and the point index.
+Path fromContour(cv::InputArray contour);
+
+/// Convert cv::findContours / cv::approxPolyDP output (any number of contours, each as in
+/// fromContour()) to roiclip paths, one path per contour, in the same order. Self-intersecting
+/// contours (approxPolyDP makes them) are fine: the core resolves them under a fill rule.
+/// Without a hierarchy the orientation of each contour is kept as it is, so read the result with
+/// FillRule::EvenOdd (what cv::fillPoly and cv::drawContours(..., FILLED) draw for one call).
+/// @throws InvalidInputError naming the contour and point, as fromContour().
+Paths fromContours(cv::InputArrayOfArrays contours);
+
+/// As fromContours(contours), using a cv::findContours hierarchy (any retrieval mode) to orient
+/// every contour: contours at even depth (outer boundaries) get a negative shoelace sum and
+/// contours at odd depth (holes) a positive one, as roiclip outputs them. The result then means
+/// the same region under FillRule::NonZero and FillRule::EvenOdd, even when approxPolyDP or a
+/// hand-made contour list had inconsistent orientations.
+/// @param hierarchy CV_32SC4, one [next, previous, firstChild, parent] entry per contour, or
+///        empty (then this is fromContours(contours)).
+/// @throws InvalidInputError when the hierarchy has the wrong type or size, refers to a
+///         contour that does not exist, or has a cycle.
+Paths fromContours(cv::InputArrayOfArrays contours, cv::InputArray hierarchy);
+
+/// Contours and their hierarchy in cv::findContours' RETR_CCOMP layout: every polygon's outer
+/// ring is a top-level contour (parent -1) linked to the other outer rings by next/previous;
+/// its holes are its children (linked to each other by next/previous, firstChild of the outer
+/// ring points at the first one). Islands inside holes are top-level contours too.
+/// hierarchy[i] = {next, previous, firstChild, parent}, -1 where there is none.
+template <typename PointT>
+struct Contours {
+  std::vector<std::vector<PointT>> contours;
+  std::vector<cv::Vec4i> hierarchy;
+};
+
+/// Convert a polygon set to integer cv::Point contours (+ RETR_CCOMP hierarchy). Ring
+/// orientations are kept: outer rings have cv::contourArea(c, true) < 0, holes > 0, like
+/// cv::findContours output.
+///
+/// Rounding to integer pixels (std::lround on each coordinate) moves each vertex by up to
+/// 0.5 px per axis. That can make a simple ring touch or even cross itself, or touch another
+/// ring, drop a vertex onto a repeated point, or collapse a thin ring to zero area. Use it for
+/// APIs that need cv::Point (cv::pointPolygonTest, cv::boundingRect, moments); for drawing use
+/// toFixedPointContours() / fillPolygonSet(), which keep sub-pixel positions.
+/// @throws InvalidInputError if a coordinate does not fit in an int.
+Contours<cv::Point> toContours(const PolygonSet& set);
+/// As toContours(), in float (no rounding to pixels; float keeps ~1/256 px up to 32768 px).
+Contours<cv::Point2f> toContours2f(const PolygonSet& set);
+/// As toContours(), in double: the exact output coordinates.
+Contours<cv::Point2d> toContours2d(const PolygonSet& set);
+
+/// Fixed-point contours for cv::fillPoly / cv::polylines / cv::drawContours with a `shift`:
+/// each coordinate is std::lround(v * 2^shift), so vertices keep 1/2^shift px precision.
+struct FixedPointContours {
+  Contours<cv::Point> contours;
+  int shift = kDefaultShift;
+};
+/// Convert a polygon set to fixed-point contours; pass `shift` on to OpenCV's drawing calls.
+/// @param shift fractional bits, 0..16 (cv::fillPoly's limit).
+/// @throws InvalidInputError if shift is out of range or a scaled coordinate does not fit in int.
+FixedPointContours toFixedPointContours(const PolygonSet& set, int shift = kDefaultShift);
+/// The same for raw paths (e.g. an ROI), no hierarchy (every path is a top-level contour).
+FixedPointContours toFixedPointContours(const Paths& paths, int shift = kDefaultShift);
+
+/// Fill a polygon set into `image` with cv::fillPoly at sub-pixel precision (kDefaultShift).
+/// All rings go into one cv::fillPoly call (even-odd), which is exactly the set's region
+/// because roiclip rings never cross. Like every cv::fillPoly call, it also draws each edge
+/// as a line, so pixels up to about 1 px outside the region can be set; rasterize() sets
+/// exactly the pixels whose centres are inside.
+/// @param image CV_8U..CV_64F image of any channel count, modified in place.
+void fillPolygonSet(cv::InputOutputArray image, const PolygonSet& set, const cv::Scalar& color,
+                    int lineType = cv::LINE_8);
+
+/// Draw the rings of a polygon set as closed polylines at sub-pixel precision (kDefaultShift).
+void drawPolygonSet(cv::InputOutputArray image, const PolygonSet& set, const cv::Scalar& color,
+                    int thickness = 1, int lineType = cv::LINE_8);
+
+}  // namespace roiclip::opencv

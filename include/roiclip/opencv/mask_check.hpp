@@ -1,0 +1,92 @@
+// roiclip::opencv mask comparison: the project's proof that vector results match raster masks.
+#pragma once
+
+#include <cstdint>
+#include <iosfwd>
+#include <optional>
+
+#include <opencv2/core.hpp>
+
+#include <roiclip/roiclip.hpp>
+
+namespace roiclip::opencv {
+
+/// Band (px) for comparing two masks made by rasterize(): both follow the same exact pixel
+/// rule, and only the clip result's vertices (crossings rounded to double, then snapped to the
+/// 1/256 px grid) differ from the exact geometry, by at most 1/256 px. 0.05 px leaves a margin.
+constexpr double kExactBand = 0.05;
+
+/// Band (px) for comparing rasterize() with cv::fillPoly. fillPoly sets every pixel a LINE_8
+/// edge line touches: with integer vertices those are within 0.5 px (per axis) of the edge,
+/// i.e. up to sqrt(0.5) ~ 0.71 px away; with `shift` the line end points are rounded to whole
+/// pixels first, which adds up to another 0.5 px per axis. 1.5 px covers both with a margin and
+/// is still far narrower than any region the tests compare.
+constexpr double kOpenCvBand = 1.5;
+
+/// Result of compareMasks(). "On" means non-zero.
+struct MaskComparison {
+  std::int64_t onlyExpected = 0;  ///< pixels on in expected, off in actual
+  std::int64_t onlyActual = 0;    ///< pixels on in actual, off in expected
+  std::int64_t both = 0;          ///< pixels on in both
+  double iou = 1.0;               ///< both / (both + onlyExpected + onlyActual); 1 if all off
+  double boundaryBand = 0.0;      ///< the band used below (px)
+  std::int64_t bandPixels = 0;    ///< pixels ignored because they lie within the band
+  std::int64_t offBandOnlyExpected = 0;  ///< onlyExpected, excluding band pixels
+  std::int64_t offBandOnlyActual = 0;    ///< onlyActual, excluding band pixels
+  double offBandIou = 1.0;               ///< IoU over the pixels outside the band
+
+  /// True when the masks agree on every pixel outside the band.
+  [[nodiscard]] bool agreesOffBand() const {
+    return offBandOnlyExpected == 0 && offBandOnlyActual == 0;
+  }
+};
+
+/// One line: "IoU 0.9973 (only expected 12, only actual 3, both 5432); off band 1.5 px: IoU 1
+/// (only expected 0, only actual 0, 118 band pixels ignored)".
+std::ostream& operator<<(std::ostream& os, const MaskComparison& c);
+
+/// Compare two single-channel masks of the same size, pixel by pixel.
+/// @param expected,actual CV_8U single-channel masks, same size; any non-zero value is "on".
+/// @param boundaryBand pixels whose centre is within this distance (px, >= 0) of any edge of
+///        `edges` are counted in bandPixels instead of the off-band counts.
+/// @param edges the paths whose edges define the band: normally every path of both operands
+///        (subject and clip), since every boundary of a result lies on one of them.
+/// @throws InvalidInputError on a type or size mismatch, a negative or NaN band, or NaN in edges.
+MaskComparison compareMasks(cv::InputArray expected, cv::InputArray actual, double boundaryBand,
+                            const Paths& edges);
+
+/// Pixels whose centre lies within `band` px (Euclidean distance to the closed segment) of any
+/// edge of `paths`, as a CV_8U mask (255 = within the band).
+cv::Mat boundaryBandMask(const Paths& paths, double band, cv::Size size);
+
+/// Options of checkRoiClip().
+struct MaskCheckOptions {
+  double exactBand = kExactBand;    ///< band for (a) vs (b)
+  double openCvBand = kOpenCvBand;  ///< band for (a) vs (c)
+  Grid grid{};
+};
+
+/// Everything checkRoiClip() computed.
+struct MaskCheck {
+  PolygonSet clipped;                            ///< clip(Intersection, subject, roi, ...)
+  MaskComparison vectorVsRaster;                 ///< (a) vs (b)
+  std::optional<MaskComparison> vectorVsOpenCv;  ///< (a) vs (c); only for even-odd/even-odd
+  /// True when every comparison made agrees off its band.
+  [[nodiscard]] bool ok() const {
+    return vectorVsRaster.agreesOffBand() && (!vectorVsOpenCv || vectorVsOpenCv->agreesOffBand());
+  }
+};
+
+/// The mask check used by the tests and the batch app. Clips `subject` to `roi` with the core
+/// and compares
+///   (a) rasterize(clip result)
+///   (b) rasterize(subject, subjectRule) AND rasterize(roi, roiRule)       band: exactBand
+///   (c) cv::fillPoly(subject) AND cv::fillPoly(roi), both at kDefaultShift, band: openCvBand;
+///       only when both rules are FillRule::EvenOdd, the only rule cv::fillPoly implements.
+/// The band is measured from the edges of subject and roi. Off the band the masks must agree
+/// exactly; any difference there is a bug (in the core or in the rasteriser).
+/// @param size image size in pixels; geometry outside it is ignored by all three masks.
+MaskCheck checkRoiClip(const Paths& subject, const Paths& roi, FillRule subjectRule,
+                       FillRule roiRule, cv::Size size, const MaskCheckOptions& options = {});
+
+}  // namespace roiclip::opencv
