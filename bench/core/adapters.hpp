@@ -1,0 +1,56 @@
+// Conversions between roiclip paths and the native types of the libraries it is compared with:
+// Clipper 1 (integer units, scaled exactly like roiclip's default grid), Boost.Geometry and the
+// GEOS C API. Conversions run outside the timed loops; only the operations are timed.
+#pragma once
+
+#include <cstddef>
+#include <memory>
+#include <vector>
+
+#include <boost/geometry.hpp>
+#include <boost/geometry/geometries/point_xy.hpp>
+#include <clipper.hpp>
+#include <geos_c.h>
+
+#include <roiclip/geometry.hpp>
+
+namespace roiclip::bench {
+
+// ---- Clipper 1 ----------------------------------------------------------------------------
+
+/// Snap to integer units with the rounding roiclip's grid uses (nearbyint(v * 256)).
+ClipperLib::Paths toClipper(const Paths& paths);
+/// Clipper's fill type for a roiclip fill rule (both count the winding of the raw (x, y)
+/// numbers; Clipper's Orientation() == true is roiclip's positive shoelace sum).
+ClipperLib::PolyFillType toClipperFill(FillRule rule);
+/// Filled area in square pixels of a Clipper solution (outer rings and holes together).
+double clipperArea(const ClipperLib::Paths& paths);
+
+// ---- Boost.Geometry -----------------------------------------------------------------------
+
+using BoostPoint = boost::geometry::model::d2::point_xy<double>;
+/// Clockwise, closed: Boost's defaults. "Clockwise" in Boost's y-up reading is a negative
+/// shoelace sum, i.e. the orientation roiclip gives outer rings.
+using BoostPolygon = boost::geometry::model::polygon<BoostPoint>;
+using BoostMultiPolygon = boost::geometry::model::multi_polygon<BoostPolygon>;
+
+/// The paths as one polygon (first path outer, the others holes), orientation corrected.
+BoostPolygon toBoost(const Paths& paths);
+std::size_t ringCount(const BoostMultiPolygon& polygons);
+
+// ---- GEOS (C API, re-entrant) -------------------------------------------------------------
+
+/// One GEOS context for the whole run; errors and notices are printed to stderr.
+GEOSContextHandle_t geosContext();
+
+struct GeosDeleter {
+  void operator()(GEOSGeometry* g) const { GEOSGeom_destroy_r(geosContext(), g); }
+};
+using GeosGeometry = std::unique_ptr<GEOSGeometry, GeosDeleter>;
+
+/// The paths as one polygon (first path outer, the others holes).
+GeosGeometry toGeos(const Paths& paths);
+double geosArea(const GEOSGeometry* g);
+std::size_t geosRingCount(const GEOSGeometry* g);
+
+}  // namespace roiclip::bench
