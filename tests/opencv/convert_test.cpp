@@ -1,0 +1,243 @@
+// Conversions between OpenCV contours and roiclip paths / polygon sets.
+#include <cmath>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <opencv2/imgproc.hpp>
+
+#include <roiclip/opencv/convert.hpp>
+
+namespace roiclip::opencv {
+namespace {
+
+std::string messageOf(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const InvalidInputError& e) {
+    return e.what();
+  }
+  return "<no InvalidInputError>";
+}
+
+TEST(FromContours, AcceptsEveryPointType) {
+  const std::vector<std::vector<cv::Point>> ints = {{{1, 2}, {3, 4}, {5, 0}}};
+  const std::vector<std::vector<cv::Point2f>> floats = {{{1.5f, 2}, {3, 4.25f}, {5, 0}}};
+  const std::vector<std::vector<cv::Point2d>> doubles = {{{1.5, 2}, {3, 4.125}, {5, 0}}};
+  EXPECT_EQ(fromContours(ints), (Paths{{{1, 2}, {3, 4}, {5, 0}}}));
+  EXPECT_EQ(fromContours(floats), (Paths{{{1.5, 2}, {3, 4.25}, {5, 0}}}));
+  EXPECT_EQ(fromContours(doubles), (Paths{{{1.5, 2}, {3, 4.125}, {5, 0}}}));
+  // std::vector<cv::Mat> of N x 1 CV_32SC2 and of N x 2 single-channel CV_64F.
+  const std::vector<cv::Mat> mats = {cv::Mat(ints[0]).clone(),
+                                     (cv::Mat_<double>(3, 2) << 0, 1, 2, 3, 4, 5.5)};
+  EXPECT_EQ(fromContours(mats), (Paths{{{1, 2}, {3, 4}, {5, 0}}, {{0, 1}, {2, 3}, {4, 5.5}}}));
+  EXPECT_EQ(fromContour(ints[0]), (Path{{1, 2}, {3, 4}, {5, 0}}));
+  EXPECT_TRUE(fromContours(std::vector<std::vector<cv::Point>>{}).empty());
+  EXPECT_EQ(fromContours(std::vector<std::vector<cv::Point>>{{}}), Paths{Path{}});
+}
+
+TEST(FromContours, AcceptsFindContoursAndApproxPolyDpOutput) {
+  cv::Mat img(40, 40, CV_8UC1, cv::Scalar(0));
+  cv::rectangle(img, cv::Rect(5, 5, 30, 30), 255, cv::FILLED);
+  cv::rectangle(img, cv::Rect(12, 12, 10, 10), 0, cv::FILLED);
+  std::vector<std::vector<cv::Point>> contours;
+  std::vector<cv::Vec4i> hierarchy;
+  cv::findContours(img, contours, hierarchy, cv::RETR_CCOMP, cv::CHAIN_APPROX_SIMPLE);
+  ASSERT_EQ(contours.size(), 2u);
+  const Paths paths = fromContours(contours);
+  ASSERT_EQ(paths.size(), 2u);
+  for (std::size_t i = 0; i < paths.size(); ++i) {
+    // Orientation is kept: the sign of roiclip's shoelace sum matches cv::contourArea.
+    EXPECT_DOUBLE_EQ(signedArea(paths[i]), cv::contourArea(contours[i], true)) << i;
+  }
+  std::vector<std::vector<cv::Point2f>> approx(1);
+  cv::approxPolyDP(contours[0], approx[0], 2.0, true);
+  EXPECT_EQ(fromContours(approx).front().size(), approx[0].size());
+}
+
+TEST(FromContours, NamesTheBadInput) {
+  const std::vector<std::vector<cv::Point2f>> withNan = {{{0, 0}, {1, 1}, {2, 2}},
+                                                         {{0, 0}, {1, NAN}, {2, 2}}};
+  EXPECT_EQ(messageOf([&] { fromContours(withNan); }),
+            "contour 1, point 1: y is not a finite number");
+  const std::vector<cv::Mat> wrongDepth = {cv::Mat(3, 1, CV_8UC2, cv::Scalar(1, 2))};
+  EXPECT_NE(messageOf([&] { fromContours(wrongDepth); }).find("contour 0: point type CV_8U"),
+            std::string::npos);
+  const std::vector<cv::Mat> threeChannels = {cv::Mat(3, 1, CV_32SC3, cv::Scalar(1, 2, 3))};
+  EXPECT_NE(messageOf([&] { fromContours(threeChannels); }).find("3 channel(s)"),
+            std::string::npos);
+  const std::vector<cv::Mat> infinite = {cv::Mat(2, 1, CV_64FC2, cv::Scalar(INFINITY, 0))};
+  EXPECT_EQ(messageOf([&] { fromContours(infinite); }),
+            "contour 0, point 0: x is not a finite number");
+  // A single matrix is one contour, not an array of contours.
+  EXPECT_NE(messageOf([&] {
+              fromContours(cv::Mat(3, 1, CV_32SC2, cv::Scalar(1, 2)));
+            }).find("single array"),
+            std::string::npos);
+}
+
+TEST(FromContours, HierarchyOrientsOuterRingsAndHoles) {
+  // Every contour given clockwise on screen (positive shoelace); depths 0, 1, 2, 0.
+  const std::vector<std::vector<cv::Point>> contours = {{{0, 0}, {30, 0}, {30, 30}, {0, 30}},
+                                                        {{5, 5}, {25, 5}, {25, 25}, {5, 25}},
+                                                        {{10, 10}, {20, 10}, {20, 20}, {10, 20}},
+                                                        {{40, 0}, {50, 0}, {50, 10}, {40, 10}}};
+  const std::vector<cv::Vec4i> hierarchy = {
+      {3, -1, 1, -1}, {-1, -1, 2, 0}, {-1, -1, -1, 1}, {-1, 0, -1, -1}};
+  const Paths paths = fromContours(contours, hierarchy);
+  EXPECT_LT(signedArea(paths[0]), 0);
+  EXPECT_GT(signedArea(paths[1]), 0);
+  EXPECT_LT(signedArea(paths[2]), 0);
+  EXPECT_LT(signedArea(paths[3]), 0);
+  // Now NonZero and EvenOdd give the same region.
+  EXPECT_DOUBLE_EQ(simplify(paths, FillRule::NonZero).area(), 900 - 400 + 100 + 100);
+  EXPECT_DOUBLE_EQ(simplify(paths, FillRule::EvenOdd).area(), 900 - 400 + 100 + 100);
+  EXPECT_EQ(fromContours(contours, cv::noArray()), fromContours(contours));
+}
+
+TEST(FromContours, RejectsBadHierarchy) {
+  const std::vector<std::vector<cv::Point>> two = {{{0, 0}, {1, 0}, {1, 1}},
+                                                   {{0, 0}, {1, 0}, {1, 1}}};
+  EXPECT_NE(messageOf([&] {
+              fromContours(two, std::vector<cv::Vec4i>{{-1, -1, -1, -1}});
+            }).find("1 entries for 2 contours"),
+            std::string::npos);
+  EXPECT_NE(messageOf([&] {
+              fromContours(two, std::vector<cv::Vec4i>{{-1, -1, -1, 7}, {-1, -1, -1, -1}});
+            }).find("does not exist"),
+            std::string::npos);
+  EXPECT_NE(messageOf([&] {
+              fromContours(two, std::vector<cv::Vec4i>{{-1, -1, -1, 1}, {-1, -1, -1, 0}});
+            }).find("cycle"),
+            std::string::npos);
+  EXPECT_NE(messageOf([&] {
+              fromContours(two, std::vector<cv::Vec3i>{{-1, -1, -1}, {-1, -1, -1}});
+            }).find("CV_32SC4"),
+            std::string::npos);
+}
+
+PolygonSet twoPolygonsWithHoles() {
+  // An outer square with two holes, an island in the first hole, and a separate triangle:
+  // 5 rings.
+  return simplify({{{0, 0}, {40, 0}, {40, 40}, {0, 40}},
+                   {{4, 4}, {18, 4}, {18, 18}, {4, 18}},
+                   {{8, 8}, {12, 8}, {12, 12}, {8, 12}},
+                   {{24, 24}, {34, 24}, {34, 34}, {24, 34}},
+                   {{50, 0}, {60, 0}, {55.25, 9.75}}},
+                  FillRule::EvenOdd);
+}
+
+TEST(ToContours, CcompHierarchyLayout) {
+  const PolygonSet set = twoPolygonsWithHoles();
+  ASSERT_EQ(set.ringCount(), 5u);
+  const Contours<cv::Point2d> c = toContours2d(set);
+  ASSERT_EQ(c.contours.size(), 5u);
+  ASSERT_EQ(c.hierarchy.size(), 5u);
+  int topLevel = 0, holes = 0;
+  for (std::size_t i = 0; i < c.hierarchy.size(); ++i) {
+    const cv::Vec4i h = c.hierarchy[i];
+    const double area = signedArea(fromContour(c.contours[i]));
+    if (h[3] < 0) {
+      ++topLevel;
+      EXPECT_LT(area, 0) << i;  // outer contour, as cv::findContours
+      // Children are holes whose parent is this contour, linked by next / previous.
+      for (int child = h[2], prev = -1; child >= 0; prev = child, child = c.hierarchy[child][0]) {
+        EXPECT_EQ(c.hierarchy[child][3], int(i));
+        EXPECT_EQ(c.hierarchy[child][1], prev);
+      }
+    } else {
+      ++holes;
+      EXPECT_GT(area, 0) << i;
+      EXPECT_LT(c.hierarchy[h[3]][3], 0) << "RETR_CCOMP has two levels only";
+      EXPECT_EQ(h[2], -1);
+    }
+    if (h[0] >= 0) {
+      EXPECT_EQ(c.hierarchy[h[0]][1], int(i));
+    }
+    if (h[1] >= 0) {
+      EXPECT_EQ(c.hierarchy[h[1]][0], int(i));
+    }
+  }
+  EXPECT_EQ(topLevel, 3);  // square, island, triangle
+  EXPECT_EQ(holes, 2);
+  // Reading the contours back with their hierarchy gives the same region.
+  EXPECT_DOUBLE_EQ(simplify(fromContours(c.contours, c.hierarchy), FillRule::NonZero).area(),
+                   set.area());
+}
+
+TEST(ToContours, PointTypesAndRounding) {
+  const PolygonSet set = twoPolygonsWithHoles();
+  const Contours<cv::Point> ints = toContours(set);
+  const Contours<cv::Point2f> floats = toContours2f(set);
+  const Contours<cv::Point2d> doubles = toContours2d(set);
+  ASSERT_EQ(ints.hierarchy, doubles.hierarchy);
+  ASSERT_EQ(floats.hierarchy, doubles.hierarchy);
+  bool sawFraction = false;
+  for (std::size_t i = 0; i < doubles.contours.size(); ++i) {
+    ASSERT_EQ(ints.contours[i].size(), doubles.contours[i].size());
+    for (std::size_t j = 0; j < doubles.contours[i].size(); ++j) {
+      const cv::Point2d p = doubles.contours[i][j];
+      EXPECT_EQ(ints.contours[i][j], cv::Point(int(std::lround(p.x)), int(std::lround(p.y))));
+      EXPECT_EQ(floats.contours[i][j], cv::Point2f(float(p.x), float(p.y)));
+      sawFraction |= p.x != std::floor(p.x);
+    }
+  }
+  EXPECT_TRUE(sawFraction);
+}
+
+TEST(ToContours, FixedPointKeepsSubPixelPositions) {
+  const PolygonSet set = twoPolygonsWithHoles();
+  const FixedPointContours fixed = toFixedPointContours(set, 4);
+  EXPECT_EQ(fixed.shift, 4);
+  const Contours<cv::Point2d> doubles = toContours2d(set);
+  for (std::size_t i = 0; i < doubles.contours.size(); ++i) {
+    for (std::size_t j = 0; j < doubles.contours[i].size(); ++j) {
+      const cv::Point q = fixed.contours.contours[i][j];
+      EXPECT_NEAR(q.x / 16.0, doubles.contours[i][j].x, 1.0 / 32);
+      EXPECT_NEAR(q.y / 16.0, doubles.contours[i][j].y, 1.0 / 32);
+    }
+  }
+  EXPECT_THROW(toFixedPointContours(set, 17), InvalidInputError);
+  EXPECT_THROW(toFixedPointContours(set, -1), InvalidInputError);
+  EXPECT_THROW(toFixedPointContours(Paths{{{1e7, 0}, {0, 1}, {1, 1}}}, 8), InvalidInputError);
+  const FixedPointContours roi = toFixedPointContours(Paths{{{0.5, 0}, {3, 0}, {3, 3}}, {}});
+  EXPECT_EQ(roi.contours.contours[0][0], cv::Point(128, 0));
+  EXPECT_EQ(roi.contours.hierarchy[0], cv::Vec4i(1, -1, -1, -1));
+  EXPECT_EQ(roi.contours.hierarchy[1], cv::Vec4i(-1, 0, -1, -1));
+}
+
+TEST(ToContours, RoundingCanMakeASimpleRingTouchItself) {
+  // A simple thin ring whose two long sides are 0.4 px apart: after rounding to integer pixels
+  // they coincide. This is what the header warns about.
+  const PolygonSet set = simplify({{{0, 0}, {10, 0.1}, {10, 0.4}, {0, 0.45}}}, FillRule::NonZero);
+  ASSERT_EQ(set.polygons.size(), 1u);
+  EXPECT_GT(set.area(), 3.0);
+  const Contours<cv::Point> ints = toContours(set);
+  EXPECT_DOUBLE_EQ(cv::contourArea(ints.contours[0]), 0.0);
+}
+
+TEST(DrawPolygonSet, FillsSubPixelGeometry) {
+  const PolygonSet set = twoPolygonsWithHoles();
+  cv::Mat filled(48, 64, CV_8UC1, cv::Scalar(0));
+  fillPolygonSet(filled, set, cv::Scalar(255));
+  // Interior pixels of the island, the holes and the triangle.
+  EXPECT_EQ(filled.at<std::uint8_t>(10, 10), 255);  // island
+  EXPECT_EQ(filled.at<std::uint8_t>(6, 6), 0);      // first hole
+  EXPECT_EQ(filled.at<std::uint8_t>(29, 29), 0);    // second hole
+  EXPECT_EQ(filled.at<std::uint8_t>(2, 2), 255);    // outer ring
+  EXPECT_EQ(filled.at<std::uint8_t>(3, 55), 255);   // triangle
+  EXPECT_EQ(filled.at<std::uint8_t>(20, 55), 0);
+  cv::Mat outlines(48, 64, CV_8UC3, cv::Scalar::all(0));
+  drawPolygonSet(outlines, set, cv::Scalar(0, 0, 255));
+  cv::Mat red;
+  cv::extractChannel(outlines, red, 2);
+  EXPECT_EQ(red.at<std::uint8_t>(0, 20), 255);
+  EXPECT_EQ(red.at<std::uint8_t>(10, 10), 0);
+  EXPECT_GT(cv::countNonZero(red), 4 * 40);
+  // An empty set draws nothing and does not throw.
+  fillPolygonSet(filled, PolygonSet{}, cv::Scalar(0));
+}
+
+}  // namespace
+}  // namespace roiclip::opencv

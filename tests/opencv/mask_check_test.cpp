@@ -1,0 +1,296 @@
+// Vector-vs-raster proof: clip results rasterised exactly must match the raster route (our
+// rasteriser and OpenCV's fillPoly) off a thin band around the operands' edges.
+#include <filesystem>
+#include <iostream>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include <roiclip/opencv/opencv.hpp>
+
+#include "scenes.hpp"
+
+namespace roiclip::opencv {
+namespace {
+
+using testing::drawScene;
+using testing::makeRois;
+using testing::SceneKind;
+
+constexpr FillRule kRules[] = {FillRule::EvenOdd, FillRule::NonZero, FillRule::Positive,
+                               FillRule::Negative};
+
+TEST(CompareMasks, CountsAndIou) {
+  cv::Mat e(10, 10, CV_8UC1, cv::Scalar(0)), a(10, 10, CV_8UC1, cv::Scalar(0));
+  e(cv::Rect(0, 0, 4, 5)).setTo(255);  // 20 px
+  a(cv::Rect(2, 0, 4, 5)).setTo(7);    // 20 px, 10 shared; any non-zero value is on
+  const MaskComparison c = compareMasks(e, a, 0.0, Paths{});
+  EXPECT_EQ(c.onlyExpected, 10);
+  EXPECT_EQ(c.onlyActual, 10);
+  EXPECT_EQ(c.both, 10);
+  EXPECT_DOUBLE_EQ(c.iou, 10.0 / 30);
+  EXPECT_EQ(c.bandPixels, 0);
+  EXPECT_FALSE(c.agreesOffBand());
+  // A band of 1 px around the segment x = 3 (from y = -1 to 10) covers columns 2..4, which
+  // holds every mismatching pixel except columns 0..1 and 5.
+  const MaskComparison banded = compareMasks(e, a, 1.0, Paths{{{3, -1}, {3, 10}}});
+  EXPECT_EQ(banded.bandPixels, 30);
+  EXPECT_EQ(banded.offBandOnlyExpected, 10);
+  EXPECT_EQ(banded.offBandOnlyActual, 5);
+  std::ostringstream os;
+  os << banded;
+  EXPECT_NE(os.str().find("only expected 10, only actual 5"), std::string::npos) << os.str();
+  EXPECT_NE(os.str().find("30 band pixels ignored"), std::string::npos) << os.str();
+  EXPECT_DOUBLE_EQ(compareMasks(a, a, 0.0, {}).iou, 1.0);
+  EXPECT_TRUE(compareMasks(cv::Mat::zeros(3, 3, CV_8U), cv::Mat::zeros(3, 3, CV_8U), 0.0, {})
+                  .agreesOffBand());
+  EXPECT_THROW(compareMasks(e, a(cv::Rect(0, 0, 9, 9)), 0.0, {}), InvalidInputError);
+  EXPECT_THROW(compareMasks(e, cv::Mat(10, 10, CV_32F), 0.0, {}), InvalidInputError);
+  EXPECT_THROW(compareMasks(e, a, -1.0, {}), InvalidInputError);
+}
+
+TEST(BoundaryBand, MatchesPerPixelDistance) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> coord(-3, 23);
+  const cv::Size size(20, 16);
+  for (int iter = 0; iter < 200; ++iter) {
+    const Paths paths = {
+        {{coord(rng), coord(rng)}, {coord(rng), coord(rng)}, {coord(rng), coord(rng)}}};
+    const double band = std::uniform_real_distribution<double>(0, 3)(rng);
+    const cv::Mat mask = boundaryBandMask(paths, band, size);
+    for (int r = 0; r < size.height; ++r) {
+      for (int c = 0; c < size.width; ++c) {
+        // Brute-force distance to the closed segments.
+        double best = INFINITY;
+        for (int i = 0; i < 3; ++i) {
+          const cv::Point2d a(paths[0][i].x, paths[0][i].y);
+          const cv::Point2d b(paths[0][(i + 1) % 3].x, paths[0][(i + 1) % 3].y);
+          const cv::Point2d d = b - a, p(c, r);
+          const double t = std::clamp((p - a).dot(d) / d.dot(d), 0.0, 1.0);
+          best = std::min(best, cv::norm(a + t * d - p));
+        }
+        if (std::fabs(best - band) < 1e-9) continue;  // too close to call in floating point
+        EXPECT_EQ(mask.at<std::uint8_t>(r, c) != 0, best <= band)
+            << "pixel " << c << "," << r << " distance " << best << " band " << band;
+      }
+    }
+  }
+}
+
+struct Contoured {
+  std::vector<std::vector<cv::Point>> contours;
+  std::vector<cv::Vec4i> hierarchy;
+};
+
+Contoured findAll(const cv::Mat& mask, int method = cv::CHAIN_APPROX_SIMPLE) {
+  Contoured c;
+  cv::findContours(mask, c.contours, c.hierarchy, cv::RETR_CCOMP, method);
+  return c;
+}
+
+/// Subject variants of one scene: raw contours (both chain methods, with and without
+/// hierarchy orientation) and approxPolyDP at several epsilons, which makes crossings.
+std::vector<std::pair<std::string, Paths>> subjectVariants(const cv::Mat& mask) {
+  std::vector<std::pair<std::string, Paths>> out;
+  const Contoured simple = findAll(mask);
+  out.emplace_back("contours", fromContours(simple.contours));
+  out.emplace_back("contours+hierarchy", fromContours(simple.contours, simple.hierarchy));
+  out.emplace_back("chain-none", fromContours(findAll(mask, cv::CHAIN_APPROX_NONE).contours));
+  for (double eps : {0.7, 2.0, 5.0, 12.0}) {
+    std::vector<std::vector<cv::Point>> approx(simple.contours.size());
+    for (std::size_t i = 0; i < approx.size(); ++i) {
+      cv::approxPolyDP(simple.contours[i], approx[i], eps, true);
+    }
+    out.emplace_back("approx" + std::to_string(eps).substr(0, 4), fromContours(approx));
+  }
+  return out;
+}
+
+/// Number of pairs of non-adjacent edges that properly cross, in all paths together (a cheap
+/// witness that the approxPolyDP variants do self-intersect).
+int countCrossings(const Paths& paths) {
+  std::vector<std::pair<Point, Point>> edges;
+  for (const Path& p : paths) {
+    for (std::size_t i = 0; i < p.size(); ++i) edges.emplace_back(p[i], p[(i + 1) % p.size()]);
+  }
+  auto orient = [](Point a, Point b, Point c) {
+    const double v = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+    return (v > 0) - (v < 0);
+  };
+  int n = 0;
+  for (std::size_t i = 0; i < edges.size(); ++i) {
+    for (std::size_t j = i + 1; j < edges.size(); ++j) {
+      const auto [a, b] = edges[i];
+      const auto [c, d] = edges[j];
+      if (orient(a, b, c) * orient(a, b, d) < 0 && orient(c, d, a) * orient(c, d, b) < 0) ++n;
+    }
+  }
+  return n;
+}
+
+struct Summary {
+  int checks = 0;
+  int openCvChecks = 0;
+  double minIou = 1.0;
+  double minOpenCvIou = 1.0;
+  std::int64_t clippedPixels = 0;    // pixels set in both (a) and (b), over all checks
+  std::int64_t differingPixels = 0;  // pixels set in only one of (a) and (b), over all checks
+  void add(const MaskCheck& check) {
+    ++checks;
+    minIou = std::min(minIou, check.vectorVsRaster.iou);
+    clippedPixels += check.vectorVsRaster.both;
+    differingPixels += check.vectorVsRaster.onlyExpected + check.vectorVsRaster.onlyActual;
+    if (check.vectorVsOpenCv) {
+      ++openCvChecks;
+      minOpenCvIou = std::min(minOpenCvIou, check.vectorVsOpenCv->iou);
+    }
+  }
+  [[nodiscard]] double overallIou() const {
+    return clippedPixels == 0 ? 1.0
+                              : double(clippedPixels) / double(clippedPixels + differingPixels);
+  }
+};
+
+void checkScene(const std::string& name, const cv::Mat& mask, Summary& summary) {
+  const cv::Size size = mask.size();
+  for (const auto& [variant, subject] : subjectVariants(mask)) {
+    for (const auto& roi : makeRois(size)) {
+      for (FillRule rule : kRules) {
+        const MaskCheck check = checkRoiClip(subject, roi.paths, rule, rule, size);
+        summary.add(check);
+        EXPECT_TRUE(check.vectorVsRaster.agreesOffBand())
+            << name << " " << variant << " roi " << roi.name << " rule " << toString(rule) << ": "
+            << check.vectorVsRaster;
+        if (check.vectorVsOpenCv) {
+          EXPECT_TRUE(check.vectorVsOpenCv->agreesOffBand())
+              << name << " " << variant << " roi " << roi.name
+              << " vs OpenCV: " << *check.vectorVsOpenCv;
+        }
+      }
+    }
+  }
+}
+
+void report(const std::string& what, const Summary& s) {
+  std::cout << what << ": " << s.checks << " checks (" << s.openCvChecks
+            << " also vs cv::fillPoly), " << s.clippedPixels
+            << " clipped pixels; IoU vs exact raster: overall " << s.overallIou() << ", worst "
+            << s.minIou << ", worst IoU vs cv::fillPoly " << s.minOpenCvIou << "\n";
+}
+
+class SyntheticScenes : public ::testing::TestWithParam<SceneKind> {};
+
+TEST_P(SyntheticScenes, ClipMatchesRasterMasksOffBand) {
+  Summary summary;
+  for (unsigned seed : {1u, 2u}) {
+    const cv::Mat mask = drawScene(GetParam(), {240, 180}, seed);
+    ASSERT_GT(cv::countNonZero(mask), 100);
+    checkScene(std::string(testing::sceneName(GetParam())) + " seed " + std::to_string(seed), mask,
+               summary);
+  }
+  report(testing::sceneName(GetParam()), summary);
+  EXPECT_GT(summary.clippedPixels, 1000);  // the checks compared real content
+  // Exact route: the only differences are pixel centres within 0.05 px of an edge. Contour
+  // edges run through pixel centres, so there are some, but few overall (a single tiny clipped
+  // piece can still have a low IoU of its own).
+  EXPECT_GT(summary.overallIou(), 0.95);
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenes, SyntheticScenes,
+                         ::testing::Values(SceneKind::Blobs, SceneKind::Text, SceneKind::ThinLines,
+                                           SceneKind::SelfTouching),
+                         [](const auto& param) { return testing::sceneName(param.param); });
+
+TEST(SyntheticScene, ApproxPolyDpVariantsSelfIntersect) {
+  // The approxPolyDP subjects must actually contain crossings, or the checks above would not
+  // exercise the core's self-intersection handling.
+  int crossings = 0;
+  for (SceneKind kind : {SceneKind::Blobs, SceneKind::Text, SceneKind::SelfTouching}) {
+    for (const auto& [variant, subject] : subjectVariants(drawScene(kind, {240, 180}, 1))) {
+      if (variant.rfind("approx", 0) == 0) crossings += countCrossings(subject);
+    }
+  }
+  EXPECT_GT(crossings, 10);
+}
+
+/// Images in images/ (written by the scene generator; may not exist yet) plus large synthetic
+/// scenes, so the test checks real content either way.
+std::vector<std::pair<std::string, cv::Mat>> sceneImages() {
+  std::vector<std::pair<std::string, cv::Mat>> out;
+  std::error_code ec;
+  std::vector<std::filesystem::path> files;
+  for (const auto& entry : std::filesystem::directory_iterator(ROICLIP_IMAGES, ec)) {
+    const std::string ext = entry.path().extension().string();
+    if (ext == ".png" || ext == ".jpg" || ext == ".jpeg" || ext == ".pgm") {
+      files.push_back(entry.path());
+    }
+  }
+  std::sort(files.begin(), files.end());
+  for (std::size_t i = 0; i < files.size() && i < 4; ++i) {  // keep the suite fast
+    cv::Mat gray = cv::imread(files[i].string(), cv::IMREAD_GRAYSCALE);
+    if (gray.empty()) continue;
+    if (gray.cols > 800) cv::resize(gray, gray, {}, 800.0 / gray.cols, 800.0 / gray.cols);
+    cv::Mat mask;
+    cv::threshold(gray, mask, 0, 255, cv::THRESH_BINARY | cv::THRESH_OTSU);
+    out.emplace_back(files[i].filename().string(), mask);
+  }
+  out.emplace_back("synthetic blobs 640x480", drawScene(SceneKind::Blobs, {640, 480}, 11));
+  out.emplace_back("synthetic text 640x480", drawScene(SceneKind::Text, {640, 480}, 12));
+  return out;
+}
+
+TEST(SceneImages, ClipMatchesRasterMasksOffBand) {
+  for (const auto& [name, mask] : sceneImages()) {
+    Summary summary;
+    const Contoured c = findAll(mask);
+    const Paths subject = fromContours(c.contours, c.hierarchy);
+    for (const auto& roi : makeRois(mask.size())) {
+      for (FillRule rule : kRules) {
+        const MaskCheck check = checkRoiClip(subject, roi.paths, rule, rule, mask.size());
+        summary.add(check);
+        EXPECT_TRUE(check.ok()) << name << " roi " << roi.name << " rule " << toString(rule) << ": "
+                                << check.vectorVsRaster << " / OpenCV: "
+                                << (check.vectorVsOpenCv ? check.vectorVsOpenCv->iou : -1.0);
+      }
+    }
+    report(name, summary);
+  }
+}
+
+TEST(RoundTrip, FindContoursToContoursFillPolyReproducesMask) {
+  for (SceneKind kind :
+       {SceneKind::Blobs, SceneKind::Text, SceneKind::ThinLines, SceneKind::SelfTouching}) {
+    for (int method : {cv::CHAIN_APPROX_NONE, cv::CHAIN_APPROX_SIMPLE}) {
+      const cv::Mat mask = drawScene(kind, {240, 180}, 3);
+      const Contoured c = findAll(mask, method);
+      const Paths paths = fromContours(c.contours, c.hierarchy);
+      for (FillRule rule : {FillRule::EvenOdd, FillRule::NonZero}) {
+        const PolygonSet set = simplify(paths, rule);
+        // Integer contours are exact here: findContours' vertices are pixel centres.
+        const Contours<cv::Point> back = toContours(set);
+        cv::Mat drawn(mask.size(), CV_8UC1, cv::Scalar(0));
+        cv::drawContours(drawn, back.contours, -1, cv::Scalar(255), cv::FILLED, cv::LINE_8,
+                         back.hierarchy);
+        const MaskComparison cmp = compareMasks(mask, drawn, 0.0, paths);
+        EXPECT_TRUE(cmp.agreesOffBand()) << testing::sceneName(kind) << ": " << cmp;
+        // fillPoly at sub-pixel precision (the default drawing form) as well.
+        cv::Mat filled(mask.size(), CV_8UC1, cv::Scalar(0));
+        fillPolygonSet(filled, set, cv::Scalar(255));
+        const MaskComparison sub = compareMasks(mask, filled, kOpenCvBand, paths);
+        EXPECT_TRUE(sub.agreesOffBand()) << testing::sceneName(kind) << ": " << sub;
+        // The vector region itself covers the mask minus half of the boundary pixels.
+        const MaskComparison exact = compareMasks(mask, rasterize(set, mask.size()), 0.75, paths);
+        EXPECT_TRUE(exact.agreesOffBand()) << exact;
+        EXPECT_EQ(exact.onlyActual, 0) << "the region never leaves the mask";
+      }
+    }
+  }
+}
+
+}  // namespace
+}  // namespace roiclip::opencv
