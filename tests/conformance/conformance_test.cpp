@@ -1,0 +1,550 @@
+// The conformance suites of ../shared/conformance as data-driven tests: one parameterised test per
+// suite, one test per (case, operation).
+//
+// Every case is judged twice:
+//  1. against an independent oracle (exact winding numbers of the raw double inputs at sample
+//     points away from every input edge): our result must agree at every sample;
+//  2. against the suite's expected result: equal area within the tolerance that snapping to the
+//     grid implies, and equal polygon and ring counts.
+// Cases whose expectation the oracle proves wrong are listed in
+// tests/data/conformance/suite_errors.txt (reasons in VERDICTS.md); for them the test asserts
+// that the oracle still rejects the expectation and accepts ours. Cases where we are wrong are
+// listed in known_failures.txt and not run; the count is printed.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <random>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <glm/common.hpp>
+#include <gtest/gtest.h>
+
+#include <roiclip/io/geojson.hpp>
+#include <roiclip/roiclip.hpp>
+
+#include "oracle.hpp"
+
+namespace roiclip::conformance {
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path kSuites = fs::path(ROICLIP_SHARED) / "conformance";
+const fs::path kLists = fs::path(ROICLIP_TEST_DATA) / "conformance";
+constexpr const char* kPolygonClipping = "polygon_clipping_e2e";
+constexpr const char* kMartinez = "martinez_generic";
+
+// Largest |coordinate| maps to about 2^29 grid units: half the grid's range is left as headroom.
+constexpr int kTargetExponent = 29;
+
+struct Case {
+  std::string suite;     // kPolygonClipping or kMartinez
+  std::string name;      // folder (polygon_clipping) or file stem (martinez)
+  std::string op;        // the suite's own name: union, intersection, difference, xor, diff, ...
+  fs::path args;         // operands
+  fs::path expected;     // file holding the expected result
+  std::size_t feature;   // martinez: index of the expected feature in `expected`
+  std::string testName;  // gtest-safe
+
+  [[nodiscard]] std::string id() const { return suite + "/" + name + "/" + op; }
+};
+
+std::ostream& operator<<(std::ostream& os, const Case& c) { return os << c.id(); }
+
+std::string sanitize(const std::string& s) {
+  std::string out;
+  for (char ch : s) out += std::isalnum(static_cast<unsigned char>(ch)) ? ch : '_';
+  return out;
+}
+
+// "suite/case/op" lines; '#' starts a comment.
+std::set<std::string> readList(const fs::path& file) {
+  std::set<std::string> ids;
+  std::ifstream in(file);
+  std::string line;
+  while (std::getline(in, line)) {
+    line = line.substr(0, line.find('#'));
+    std::istringstream words(line);
+    std::string id;
+    if (words >> id) ids.insert(id);
+  }
+  return ids;
+}
+
+const std::set<std::string>& knownFailures() {
+  static const std::set<std::string> ids = readList(kLists / "known_failures.txt");
+  return ids;
+}
+const std::set<std::string>& suiteErrors() {
+  static const std::set<std::string> ids = readList(kLists / "suite_errors.txt");
+  return ids;
+}
+
+std::vector<Case> allCases(const std::string& suite) {
+  std::vector<Case> cases;
+  const fs::path dir = kSuites / suite;
+  if (!fs::is_directory(dir)) return cases;
+  std::vector<fs::path> entries;
+  for (const auto& e : fs::directory_iterator(dir)) entries.push_back(e.path());
+  std::sort(entries.begin(), entries.end());
+  for (const fs::path& entry : entries) {
+    if (suite == kPolygonClipping) {
+      if (!fs::exists(entry / "args.geojson")) continue;
+      for (const char* op : {"union", "intersection", "difference", "xor"}) {
+        for (const std::string& file : {std::string(op), std::string("all")}) {
+          const fs::path expected = entry / (file + ".geojson");
+          if (!fs::exists(expected)) continue;
+          cases.push_back(
+              {suite, entry.filename().string(), op, entry / "args.geojson", expected, 0, ""});
+          break;
+        }
+      }
+    } else if (entry.extension() == ".geojson") {
+      const auto features = io::readFeatures(entry.string(), {true});
+      for (std::size_t f = 2; f < features.size(); ++f) {
+        const auto op = features[f].properties.find("operation");
+        if (op == features[f].properties.end()) continue;
+        cases.push_back({suite, entry.stem().string(), op->second, entry, entry, f, ""});
+      }
+    }
+  }
+  std::set<std::string> names;
+  for (std::size_t i = 0; i < cases.size(); ++i) {
+    std::string name = sanitize(cases[i].name + "__" + cases[i].op);
+    if (!names.insert(name).second) name += "_" + std::to_string(i);
+    cases[i].testName = name;
+  }
+  return cases;
+}
+
+// The cases that run by default: all but the known failures (ROICLIP_RUN_KNOWN_FAILURES=1 runs
+// those too, to check whether they still fail).
+std::vector<Case> defaultCases(const std::string& suite) {
+  std::vector<Case> cases = allCases(suite);
+  if (std::getenv("ROICLIP_RUN_KNOWN_FAILURES") != nullptr) return cases;
+  cases.erase(std::remove_if(cases.begin(), cases.end(),
+                             [](const Case& c) { return knownFailures().count(c.id()) > 0; }),
+              cases.end());
+  return cases;
+}
+
+// --- what the suites mean ---
+
+// An operand as the suite defines it. polygon_clipping: each Polygon is its outer ring minus its
+// inner rings (orientation ignored), the polygons of a feature unioned. martinez: all rings of the
+// feature under even-odd.
+struct Operand {
+  std::vector<Paths> polygons;
+  bool evenOdd = false;
+
+  [[nodiscard]] bool contains(Point p) const {
+    if (evenOdd) {
+      long long w = 0;
+      for (const Paths& polygon : polygons) w += windingNumber(polygon, p);
+      return (w & 1) != 0;
+    }
+    for (const Paths& polygon : polygons) {
+      if (polygon.empty() || windingNumber(polygon[0], p) == 0) continue;
+      bool inHole = false;
+      for (std::size_t h = 1; h < polygon.size() && !inHole; ++h) {
+        inHole = windingNumber(polygon[h], p) != 0;
+      }
+      if (!inHole) return true;
+    }
+    return false;
+  }
+
+  [[nodiscard]] Paths rings() const {
+    Paths out;
+    for (const Paths& polygon : polygons) out.insert(out.end(), polygon.begin(), polygon.end());
+    return out;
+  }
+};
+
+// The operation a case asks for, as a fold over the operands.
+struct Operation {
+  ClipOp op = ClipOp::Union;
+  bool reversed = false;  // martinez diff_ba: clip minus subject
+};
+
+Operation parseOperation(const std::string& name) {
+  if (name == "diff") return {ClipOp::Difference, false};
+  if (name == "diff_ba") return {ClipOp::Difference, true};
+  return {parseClipOp(name.c_str()), false};
+}
+
+bool apply(ClipOp op, bool a, bool b) {
+  switch (op) {
+    case ClipOp::Intersection:
+      return a && b;
+    case ClipOp::Union:
+      return a || b;
+    case ClipOp::Difference:
+      return a && !b;
+    case ClipOp::Xor:
+      return a != b;
+  }
+  return false;
+}
+
+struct Loaded {
+  std::vector<Operand> operands;
+  Operation operation;
+  std::vector<Paths> expected;  // polygons: outer ring, then holes
+
+  // The truth at p, from the raw operands.
+  [[nodiscard]] bool truth(Point p) const {
+    if (operands.empty()) return false;
+    if (operation.reversed) {
+      return apply(operation.op, operands[1].contains(p), operands[0].contains(p));
+    }
+    bool in = operands[0].contains(p);
+    for (std::size_t i = 1; i < operands.size(); ++i) {
+      in = apply(operation.op, in, operands[i].contains(p));
+    }
+    return in;
+  }
+};
+
+Loaded load(const Case& c) {
+  Loaded l;
+  l.operation = parseOperation(c.op);
+  const io::ReadOptions lenient{true};  // the suites hold rings without area on purpose
+  const std::vector<io::Feature> args = io::readFeatures(c.args.string(), lenient);
+  if (c.suite == kPolygonClipping) {
+    for (const io::Feature& f : args) l.operands.push_back({f.polygons, false});
+    const std::vector<io::Feature> expected = io::readFeatures(c.expected.string(), lenient);
+    for (const io::Feature& f : expected) {
+      l.expected.insert(l.expected.end(), f.polygons.begin(), f.polygons.end());
+    }
+  } else {
+    l.operands.push_back({args.at(0).polygons, true});
+    l.operands.push_back({args.at(1).polygons, true});
+    l.expected = args.at(c.feature).polygons;
+  }
+  return l;
+}
+
+// --- our answer ---
+
+Paths regionRings(const PolygonSet& set) { return set.toPaths(); }
+
+// One operand as a region, built with the core (which only has binary operations): each polygon
+// is its outer ring minus the union of its holes, each ring read on its own (NonZero, so its
+// orientation does not matter), then the polygons are unioned. toPaths() of a result winds -1
+// inside, so concatenating results and reading them NonZero is their union.
+PolygonSet buildOperand(const Operand& operand, const Grid& grid) {
+  if (operand.evenOdd) return simplify(operand.rings(), FillRule::EvenOdd, grid);
+  Paths all;
+  for (const Paths& polygon : operand.polygons) {
+    if (polygon.empty()) continue;
+    const Paths outer = regionRings(simplify({polygon[0]}, FillRule::NonZero, grid));
+    Paths holes;
+    for (std::size_t h = 1; h < polygon.size(); ++h) {
+      const Paths hole = regionRings(simplify({polygon[h]}, FillRule::NonZero, grid));
+      holes.insert(holes.end(), hole.begin(), hole.end());
+    }
+    const Paths piece = holes.empty()
+                            ? outer
+                            : regionRings(clip(ClipOp::Difference, outer, holes, FillRule::NonZero,
+                                               FillRule::NonZero, grid));
+    all.insert(all.end(), piece.begin(), piece.end());
+  }
+  return simplify(all, FillRule::NonZero, grid);
+}
+
+struct Ours {
+  PolygonSet result;
+  int steps = 0;  // core calls whose output was snapped again (each may move edges by a cell)
+};
+
+Ours computeOurs(const Loaded& l, const Grid& grid) {
+  Ours ours;
+  if (l.operands[0].evenOdd) {  // martinez: one binary operation on the raw rings
+    const Paths a = l.operands[0].rings();
+    const Paths b = l.operands[1].rings();
+    ours.result = l.operation.reversed
+                      ? clip(l.operation.op, b, a, FillRule::EvenOdd, FillRule::EvenOdd, grid)
+                      : clip(l.operation.op, a, b, FillRule::EvenOdd, FillRule::EvenOdd, grid);
+    ours.steps = 1;
+    return ours;
+  }
+  ours.result = buildOperand(l.operands[0], grid);
+  ours.steps = 3;  // ring simplify, hole difference, polygon union
+  for (std::size_t i = 1; i < l.operands.size(); ++i) {
+    const PolygonSet next = buildOperand(l.operands[i], grid);
+    ours.result = clip(l.operation.op, ours.result.toPaths(), next.toPaths(), FillRule::NonZero,
+                       FillRule::NonZero, grid);
+    ours.steps += 1;
+  }
+  return ours;
+}
+
+// --- measures ---
+
+double pathLength(const Path& ring) {
+  double length = 0;
+  for (std::size_t i = 0; i < ring.size(); ++i) {
+    const Point d = ring[(i + 1) % ring.size()] - ring[i];
+    length += std::hypot(d.x, d.y);
+  }
+  return length;
+}
+
+bool hasArea(const Path& ring) { return signedArea(ring) != 0.0; }
+
+struct ExpectedMeasures {
+  double area = 0;
+  std::size_t polygons = 0;
+  std::size_t rings = 0;
+};
+
+// Area as the suite's engine meant it: |outer| minus |holes|, orientation ignored. Rings without
+// area (which the suites contain) are not counted.
+ExpectedMeasures measureExpected(const std::vector<Paths>& polygons) {
+  ExpectedMeasures m;
+  for (const Paths& polygon : polygons) {
+    if (polygon.empty() || !hasArea(polygon[0])) continue;
+    ++m.polygons;
+    for (std::size_t r = 0; r < polygon.size(); ++r) {
+      if (!hasArea(polygon[r])) continue;
+      ++m.rings;
+      m.area += (r == 0 ? 1 : -1) * std::fabs(signedArea(polygon[r]));
+    }
+  }
+  return m;
+}
+
+// Power-of-two scale so that the largest |coordinate| of the case maps to at most 2^29 units.
+double chooseScale(const Loaded& l) {
+  double maxAbs = 0;
+  auto visit = [&](const Paths& rings) {
+    for (const Path& ring : rings) {
+      for (Point p : ring) maxAbs = std::max({maxAbs, std::fabs(p.x), std::fabs(p.y)});
+    }
+  };
+  for (const Operand& o : l.operands) visit(o.rings());
+  for (const Paths& polygon : l.expected) visit(polygon);
+  if (maxAbs == 0) return 1.0;
+  int exponent = 0;
+  std::frexp(maxAbs, &exponent);  // maxAbs <= 2^exponent
+  return std::ldexp(1.0, kTargetExponent - exponent);
+}
+
+// --- the oracle's verdict ---
+
+struct OracleVerdict {
+  std::size_t samples = 0;
+  std::size_t oursWrong = 0;
+  std::size_t expectedWrong = 0;
+  Point firstOursWrong{0}, firstExpectedWrong{0};
+};
+
+bool evenOddContains(const Paths& rings, Point p) { return (windingNumber(rings, p) & 1) != 0; }
+
+// Samples: uniform points over the bounding box, plus points around every vertex and beside
+// every edge midpoint of the inputs, our result and the expected result (disagreements sit next
+// to some edge of one of them). Points within `margin` of an input edge are skipped: there the
+// snapping to the grid may legitimately move the boundary.
+OracleVerdict judge(const Loaded& l, const PolygonSet& ours, double margin, std::uint64_t seed) {
+  Paths inputs;
+  for (const Operand& o : l.operands) {
+    const Paths r = o.rings();
+    inputs.insert(inputs.end(), r.begin(), r.end());
+  }
+  Paths expectedRings;
+  for (const Paths& polygon : l.expected) {
+    expectedRings.insert(expectedRings.end(), polygon.begin(), polygon.end());
+  }
+  const Paths ourRings = ours.toPaths();
+  const SegmentProximity nearInput(inputs, margin);
+  const std::vector<const Paths*> allRings = {&inputs, &expectedRings, &ourRings};
+
+  std::vector<Point> candidates;
+  Point lo(INFINITY), hi(-INFINITY);
+  for (const Paths* set : allRings) {
+    for (const Path& ring : *set) {
+      for (Point p : ring) {
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p);
+      }
+    }
+  }
+  if (!(lo.x <= hi.x)) return {};
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> ux(lo.x, hi.x), uy(lo.y, hi.y);
+  for (int i = 0; i < 4000; ++i) candidates.emplace_back(ux(rng), uy(rng));
+  const double radii[] = {2 * margin, 16 * margin};
+  for (const Paths* set : allRings) {
+    for (const Path& ring : *set) {
+      const std::size_t stride = std::max<std::size_t>(1, ring.size() / 500);
+      for (std::size_t i = 0; i < ring.size(); i += stride) {
+        const Point a = ring[i];
+        const Point b = ring[(i + 1) % ring.size()];
+        for (double r : radii) {
+          for (int k = 0; k < 8; ++k) {
+            const double angle = (k + 0.5) * M_PI / 4;
+            candidates.push_back(a + r * Point(std::cos(angle), std::sin(angle)));
+          }
+          const Point d = b - a;
+          const double len = std::hypot(d.x, d.y);
+          if (len > 0) {
+            const Point normal(-d.y / len, d.x / len);
+            candidates.push_back((a + b) * 0.5 + r * normal);
+            candidates.push_back((a + b) * 0.5 - r * normal);
+          }
+        }
+      }
+    }
+  }
+  OracleVerdict v;
+  for (Point p : candidates) {
+    if (nearInput.near(p)) continue;
+    ++v.samples;
+    const bool truth = l.truth(p);
+    if (evenOddContains(ourRings, p) != truth && v.oursWrong++ == 0) v.firstOursWrong = p;
+    if (evenOddContains(expectedRings, p) != truth && v.expectedWrong++ == 0) {
+      v.firstExpectedWrong = p;
+    }
+  }
+  return v;
+}
+
+// --- the report at the end ---
+
+struct Tally {
+  int run = 0;
+  int agree = 0;       // matches the suite and the oracle
+  int suiteWrong = 0;  // listed and confirmed: the oracle rejects the suite and accepts us
+  int failed = 0;
+};
+std::map<std::string, Tally>& tallies() {
+  static std::map<std::string, Tally> t;
+  return t;
+}
+
+class Report : public ::testing::Environment {
+ public:
+  void SetUp() override {
+    std::cout << "[conformance] known_failures.txt lists " << knownFailures().size()
+              << " case(s), not run by default:";
+    for (const std::string& id : knownFailures()) std::cout << " " << id;
+    std::cout << "\n[conformance] suite_errors.txt lists " << suiteErrors().size()
+              << " case(s) whose expected result the oracle rejects\n";
+  }
+  void TearDown() override {
+    for (const auto& [suite, t] : tallies()) {
+      std::cout << "[conformance] " << suite << ": " << t.run << " run, " << t.agree
+                << " agree with the suite, " << t.suiteWrong
+                << " suite wrong (we match the oracle), " << t.failed << " failed\n";
+    }
+  }
+};
+const auto* const kReport = ::testing::AddGlobalTestEnvironment(new Report);
+
+std::uint64_t fnv1a(const std::string& s) {
+  std::uint64_t h = 1469598103934665603ull;
+  for (unsigned char ch : s) h = (h ^ ch) * 1099511628211ull;
+  return h;
+}
+
+void runCase(const Case& c) {
+  Tally& tally = tallies()[c.suite];
+  ++tally.run;
+  const Loaded l = load(c);
+  const double scale = chooseScale(l);
+  const Grid grid{scale};
+  const double cell = 1.0 / scale;
+  const Ours ours = computeOurs(l, grid);
+
+  // Snapping moves each vertex by at most half a cell per axis, so each edge by less than a cell;
+  // every core call whose input is the previous output snaps again. The area can change by at
+  // most (perimeter of everything) x (total movement); the suites' engines round too, far below.
+  double perimeter = 0;
+  for (const Operand& o : l.operands) {
+    for (const Path& ring : o.rings()) perimeter += pathLength(ring);
+  }
+  const double tolerance = perimeter * cell * (ours.steps + 1);
+  const ExpectedMeasures expected = measureExpected(l.expected);
+  const double ourArea = ours.result.area();
+  const bool areaMatches = std::fabs(ourArea - expected.area) <= tolerance;
+  const bool countsMatch =
+      ours.result.polygons.size() == expected.polygons && ours.result.ringCount() == expected.rings;
+
+  const double margin = 4 * cell * (ours.steps + 1);
+  const OracleVerdict v = judge(l, ours.result, margin, fnv1a(c.id()));
+
+  std::ostringstream info;
+  info.precision(17);
+  info << c.id() << ": area ours " << ourArea << " expected " << expected.area << " (tolerance "
+       << tolerance << ", relative " << tolerance / std::max(std::fabs(expected.area), 1e-300)
+       << "), polygons ours " << ours.result.polygons.size() << " expected " << expected.polygons
+       << ", rings ours " << ours.result.ringCount() << " expected " << expected.rings
+       << "; oracle: " << v.samples << " samples, ours wrong at " << v.oursWrong
+       << ", expected wrong at " << v.expectedWrong;
+  if (v.oursWrong > 0) {
+    info << " (first ours wrong at " << v.firstOursWrong.x << "," << v.firstOursWrong.y << ")";
+  }
+  if (v.expectedWrong > 0) {
+    info << " (first expected wrong at " << v.firstExpectedWrong.x << "," << v.firstExpectedWrong.y
+         << ")";
+  }
+  SCOPED_TRACE(info.str());
+  ::testing::Test::RecordProperty("verdict", info.str());
+  if (std::getenv("ROICLIP_CONFORMANCE_VERBOSE") != nullptr) std::cout << info.str() << "\n";
+
+  EXPECT_GT(v.samples, 0u) << "the oracle had no sample point";
+  EXPECT_EQ(v.oursWrong, 0u) << "our result disagrees with the exact winding-number oracle";
+  if (suiteErrors().count(c.id()) > 0) {
+    // Listed as a suite error: still true only while the oracle rejects the expectation.
+    EXPECT_GT(v.expectedWrong, 0u) << "listed in suite_errors.txt but the oracle accepts the "
+                                      "suite's expectation: remove it from the list";
+    EXPECT_FALSE(areaMatches && countsMatch) << "listed in suite_errors.txt but we now agree";
+  } else {
+    EXPECT_TRUE(areaMatches) << "area differs from the suite's expectation";
+    EXPECT_TRUE(countsMatch) << "polygon or ring count differs from the suite's expectation";
+  }
+  if (::testing::Test::HasFailure()) {
+    ++tally.failed;
+  } else if (suiteErrors().count(c.id()) > 0) {
+    ++tally.suiteWrong;
+  } else {
+    ++tally.agree;
+  }
+}
+
+std::string caseName(const ::testing::TestParamInfo<Case>& info) { return info.param.testName; }
+
+class PolygonClippingE2e : public ::testing::TestWithParam<Case> {};
+TEST_P(PolygonClippingE2e, Case) { runCase(GetParam()); }
+INSTANTIATE_TEST_SUITE_P(Conformance, PolygonClippingE2e,
+                         ::testing::ValuesIn(defaultCases(kPolygonClipping)), caseName);
+
+class MartinezGeneric : public ::testing::TestWithParam<Case> {};
+TEST_P(MartinezGeneric, Case) { runCase(GetParam()); }
+INSTANTIATE_TEST_SUITE_P(Conformance, MartinezGeneric, ::testing::ValuesIn(defaultCases(kMartinez)),
+                         caseName);
+
+// The lists name real cases (a typo would otherwise hide a failure or excuse nothing), and
+// the suites are where they should be.
+TEST(ConformanceLists, NameExistingCases) {
+  std::set<std::string> ids;
+  for (const char* suite : {kPolygonClipping, kMartinez}) {
+    for (const Case& c : allCases(suite)) ids.insert(c.id());
+  }
+  EXPECT_GE(ids.size(), 200u) << "conformance data missing under " << kSuites;
+  for (const std::string& id : knownFailures()) EXPECT_EQ(ids.count(id), 1u) << id;
+  for (const std::string& id : suiteErrors()) EXPECT_EQ(ids.count(id), 1u) << id;
+  for (const std::string& id : knownFailures()) EXPECT_EQ(suiteErrors().count(id), 0u) << id;
+}
+
+}  // namespace
+}  // namespace roiclip::conformance
