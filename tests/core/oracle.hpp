@@ -3,6 +3,7 @@
 // library's own predicates or pipeline.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <optional>
@@ -215,6 +216,68 @@ SampleReport sampleRegion(const PolygonSet& result, const std::vector<const Path
     }
   }
   return report;
+}
+
+/// Area of { p : inside(w_0(p), w_1(p), ...) } computed independently of roiclip by vertical
+/// slabs: between consecutive x of vertices and pairwise crossings no two edges cross, so each
+/// slab is a stack of trapezoids whose winding numbers are counted from the bottom. O(n^3):
+/// small inputs only.
+template <class Inside>
+double slabArea(const std::vector<const Paths*>& inputs, Inside inside) {
+  struct Edge {
+    Point a, b;  // a.x < b.x
+    int operand, dir;
+  };
+  std::vector<Edge> edges;
+  std::vector<double> xs;
+  for (std::size_t k = 0; k < inputs.size(); ++k) {
+    for (const Path& path : *inputs[k]) {
+      for (std::size_t i = 0; i < path.size(); ++i) {
+        const Point a = path[i], b = path[(i + 1) % path.size()];
+        xs.push_back(a.x);
+        if (a.x < b.x) edges.push_back({a, b, int(k), +1});
+        if (a.x > b.x) edges.push_back({b, a, int(k), -1});
+      }
+    }
+  }
+  for (std::size_t i = 0; i < edges.size(); ++i) {
+    for (std::size_t j = i + 1; j < edges.size(); ++j) {
+      const Point p = edges[i].a, r = edges[i].b - edges[i].a;
+      const Point q = edges[j].a, s = edges[j].b - edges[j].a;
+      const double den = r.x * s.y - r.y * s.x;
+      if (den == 0) continue;
+      const double t = ((q.x - p.x) * s.y - (q.y - p.y) * s.x) / den;
+      const double u = ((q.x - p.x) * r.y - (q.y - p.y) * r.x) / den;
+      if (t > 0 && t < 1 && u > 0 && u < 1) xs.push_back(p.x + t * r.x);
+    }
+  }
+  std::sort(xs.begin(), xs.end());
+  xs.erase(std::unique(xs.begin(), xs.end()), xs.end());
+  double area = 0;
+  for (std::size_t i = 0; i + 1 < xs.size(); ++i) {
+    const double x0 = xs[i], x1 = xs[i + 1], xm = 0.5 * (x0 + x1);
+    if (!(x1 > x0)) continue;
+    struct Cut {
+      double y0, ym, y1;
+      int operand, dir;
+    };
+    std::vector<Cut> cuts;
+    for (const Edge& e : edges) {
+      if (e.a.x <= xm && xm < e.b.x) {
+        auto y = [&](double x) { return e.a.y + (e.b.y - e.a.y) * (x - e.a.x) / (e.b.x - e.a.x); };
+        cuts.push_back({y(x0), y(xm), y(x1), e.operand, e.dir});
+      }
+    }
+    std::sort(cuts.begin(), cuts.end(), [](const Cut& a, const Cut& b) { return a.ym < b.ym; });
+    std::vector<long long> w(inputs.size(), 0);
+    for (std::size_t c = 0; c + 1 < cuts.size(); ++c) {
+      w[cuts[c].operand] += cuts[c].dir;
+      if (inside(w)) {
+        area += 0.5 * ((cuts[c + 1].y0 - cuts[c].y0) + (cuts[c + 1].y1 - cuts[c].y1)) * (x1 - x0);
+      }
+    }
+  }
+  return area;
 }
 
 /// Random polygon generators (fixed seeds by the caller).

@@ -45,19 +45,37 @@ void saveFailure(const std::string& name, const Paths& subject, const Paths* cli
   f << "}\n";
 }
 
-// Kinds of random input: 0 random vertices, 1 grid walk (degenerate-heavy), 2 several paths.
-Paths randomInput(std::mt19937& rng, int kind, int size) {
+// Kinds of random input, all inside [0, 20]^2:
+// 0 random vertices; 1 grid walk with step 2 (collinear runs, touching, overlapping edges);
+// 2 several random paths; 3 unit-step walk on a 6x6 grid (almost everything degenerate);
+// 4 an OpenCV-like pixel chain; 5 a random quad with sub-pixel corners (multiples of 1/256).
+constexpr int kKinds = 6;
+Paths randomInput(std::mt19937& rng, int kind) {
   switch (kind) {
     case 0:
-      return {testing::randomPolygon(rng, 4 + int(rng() % 12), size)};
+      return {testing::randomPolygon(rng, 4 + int(rng() % 12), 20)};
     case 1:
-      return {testing::randomGridWalk(rng, 6 + int(rng() % 20), 2, size)};
-    default: {
+      return {testing::randomGridWalk(rng, 6 + int(rng() % 20), 2, 20)};
+    case 2: {
       Paths p;
       const int count = 1 + int(rng() % 3);
-      for (int i = 0; i < count; ++i)
-        p.push_back(testing::randomPolygon(rng, 3 + int(rng() % 6), size));
+      for (int i = 0; i < count; ++i) {
+        p.push_back(testing::randomPolygon(rng, 3 + int(rng() % 6), 20));
+      }
       return p;
+    }
+    case 3:
+      return {testing::randomGridWalk(rng, 8 + int(rng() % 30), 1, 6)};
+    case 4: {
+      Path chain = testing::pixelChain(rng, 20 + int(rng() % 60));
+      for (Point& q : chain) q += Point(10, 10);
+      return {chain};
+    }
+    default: {
+      std::uniform_int_distribution<int> c(0, 20 * 256);
+      Path quad;
+      for (int i = 0; i < 4; ++i) quad.emplace_back(c(rng) / 256.0, c(rng) / 256.0);
+      return {quad};
     }
   }
 }
@@ -69,7 +87,7 @@ TEST_P(SimplifyProperty, MatchesWindingOracle) {
   std::mt19937 rng(1234 + kind);
   int cases = 0;
   for (int iter = 0; iter < 400; ++iter) {
-    const Paths input = randomInput(rng, kind, 20);
+    const Paths input = randomInput(rng, kind);
     for (FillRule rule : kRules) {
       const PolygonSet result = simplify(input, rule);
       const std::string problems = structureProblems(result);
@@ -80,6 +98,11 @@ TEST_P(SimplifyProperty, MatchesWindingOracle) {
         saveFailure("simplify_" + std::to_string(kind) + "_" + std::to_string(iter), input, nullptr,
                     toString(rule));
       }
+      EXPECT_GT(report.checked, 75);
+      const double truth = testing::slabArea(
+          {&input}, [&](const std::vector<long long>& w) { return isFilled(rule, w[0]); });
+      ASSERT_NEAR(result.area(), truth, 1e-9 * (truth + 1))
+          << toString(rule) << " input " << describe(input);
       ASSERT_EQ(problems, "") << toString(rule) << " input " << describe(input);
       ASSERT_EQ(report.mismatches, 0)
           << toString(rule) << " " << report.firstMismatch << " input " << describe(input);
@@ -89,7 +112,7 @@ TEST_P(SimplifyProperty, MatchesWindingOracle) {
   EXPECT_EQ(cases, 1600);
 }
 
-INSTANTIATE_TEST_SUITE_P(Kinds, SimplifyProperty, ::testing::Values(0, 1, 2));
+INSTANTIATE_TEST_SUITE_P(Kinds, SimplifyProperty, ::testing::Range(0, kKinds));
 
 class ClipProperty : public ::testing::TestWithParam<int> {};
 
@@ -98,8 +121,8 @@ TEST_P(ClipProperty, MatchesWindingOracleAndAreaIdentities) {
   std::mt19937 rng(777 + kind);
   int cases = 0;
   for (int iter = 0; iter < 120; ++iter) {
-    const Paths a = randomInput(rng, kind, 20);
-    const Paths b = randomInput(rng, kind, 20);
+    const Paths a = randomInput(rng, kind);
+    const Paths b = randomInput(rng, (kind + iter) % kKinds);
     for (FillRule ra : kRules) {
       for (FillRule rb : kRules) {
         double area[4] = {0, 0, 0, 0};
@@ -118,6 +141,7 @@ TEST_P(ClipProperty, MatchesWindingOracleAndAreaIdentities) {
             saveFailure("clip_" + std::to_string(kind) + "_" + std::to_string(iter), a, &b,
                         std::string(toString(op)) + " " + toString(ra) + " " + toString(rb));
           }
+          EXPECT_GT(report.checked, 30);
           ASSERT_EQ(problems, "") << toString(op) << " " << toString(ra) << "/" << toString(rb)
                                   << " A " << describe(a) << " B " << describe(b);
           ASSERT_EQ(report.mismatches, 0)
@@ -138,7 +162,7 @@ TEST_P(ClipProperty, MatchesWindingOracleAndAreaIdentities) {
   EXPECT_EQ(cases, 120 * 64);
 }
 
-INSTANTIATE_TEST_SUITE_P(Kinds, ClipProperty, ::testing::Values(0, 1, 2));
+INSTANTIATE_TEST_SUITE_P(Kinds, ClipProperty, ::testing::Range(0, kKinds));
 
 }  // namespace
 }  // namespace roiclip

@@ -1,0 +1,181 @@
+// Clipper 1 (libpolyclipping) as an independent oracle: on random self-intersecting inputs the
+// areas of simplify() and clip() agree with Clipper's for every fill rule and operation, within
+// the error Clipper makes by rounding crossing points to its integer grid.
+#include <gtest/gtest.h>
+
+#include <clipper.hpp>
+#include <cmath>
+#include <cstdio>
+
+#include <roiclip/roiclip.hpp>
+
+#include "oracle.hpp"
+
+namespace roiclip {
+namespace {
+
+constexpr double kUnits = 256.0;  // Clipper works on the same 1/256 px grid as roiclip
+
+ClipperLib::Paths toClipper(const Paths& paths) {
+  ClipperLib::Paths out;
+  for (const Path& p : paths) {
+    ClipperLib::Path q;
+    for (const Point& v : p) {
+      q.emplace_back(ClipperLib::cInt(std::llround(v.x * kUnits)),
+                     ClipperLib::cInt(std::llround(v.y * kUnits)));
+    }
+    out.push_back(q);
+  }
+  return out;
+}
+
+ClipperLib::PolyFillType toClipper(FillRule r) {
+  switch (r) {
+    case FillRule::EvenOdd:
+      return ClipperLib::pftEvenOdd;
+    case FillRule::NonZero:
+      return ClipperLib::pftNonZero;
+    case FillRule::Positive:
+      return ClipperLib::pftPositive;
+    case FillRule::Negative:
+      return ClipperLib::pftNegative;
+  }
+  return ClipperLib::pftEvenOdd;
+}
+
+ClipperLib::ClipType toClipper(ClipOp op) {
+  switch (op) {
+    case ClipOp::Intersection:
+      return ClipperLib::ctIntersection;
+    case ClipOp::Union:
+      return ClipperLib::ctUnion;
+    case ClipOp::Difference:
+      return ClipperLib::ctDifference;
+    case ClipOp::Xor:
+      return ClipperLib::ctXor;
+  }
+  return ClipperLib::ctIntersection;
+}
+
+struct AreaAndPerimeter {
+  double area = 0;
+  double perimeter = 0;
+};
+
+AreaAndPerimeter measure(const ClipperLib::Paths& paths) {
+  AreaAndPerimeter m;
+  for (const auto& p : paths) {
+    m.area += ClipperLib::Area(p) / (kUnits * kUnits);
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      const auto& a = p[i];
+      const auto& b = p[(i + 1) % p.size()];
+      m.perimeter += std::hypot(double(b.X - a.X), double(b.Y - a.Y)) / kUnits;
+    }
+  }
+  return m;
+}
+
+// Clipper moves each crossing point by at most half a unit diagonally; the area changes by at
+// most that displacement times the perimeter of its output.
+double roundingTolerance(const AreaAndPerimeter& m) { return m.perimeter * 0.71 / kUnits + 1e-9; }
+
+bool combine(ClipOp op, bool s, bool c) {
+  switch (op) {
+    case ClipOp::Intersection:
+      return s && c;
+    case ClipOp::Union:
+      return s || c;
+    case ClipOp::Difference:
+      return s && !c;
+    case ClipOp::Xor:
+      return s != c;
+  }
+  return false;
+}
+
+constexpr FillRule kRules[] = {FillRule::EvenOdd, FillRule::NonZero, FillRule::Positive,
+                               FillRule::Negative};
+constexpr ClipOp kOps[] = {ClipOp::Intersection, ClipOp::Union, ClipOp::Difference, ClipOp::Xor};
+
+Paths randomSet(std::mt19937& rng, int kind) {
+  if (kind == 0) return {testing::randomPolygon(rng, 5 + int(rng() % 20), 50)};
+  if (kind == 1) return {testing::randomGridWalk(rng, 10 + int(rng() % 40), 1, 12)};
+  Path chain = testing::pixelChain(rng, 40 + int(rng() % 100));
+  for (Point& q : chain) q += Point(25, 25);
+  return {chain, testing::randomPolygon(rng, 4, 50)};
+}
+
+TEST(ClipperOracle, SimplifyAreasAgree) {
+  std::mt19937 rng(2024);
+  int compared = 0, agreed = 0, clipperWrong = 0;
+  for (int iter = 0; iter < 300; ++iter) {
+    const Paths input = randomSet(rng, iter % 3);
+    for (FillRule rule : kRules) {
+      ClipperLib::Paths solution;
+      ClipperLib::SimplifyPolygons(toClipper(input), solution, toClipper(rule));
+      const AreaAndPerimeter expected = measure(solution);
+      const double ours = simplify(input, rule).area();
+      if (std::fabs(ours - std::fabs(expected.area)) > roundingTolerance(expected)) {
+        // Disagreement: the slab integration of the exact winding numbers decides.
+        const double truth = testing::slabArea(
+            {&input}, [&](const std::vector<long long>& w) { return isFilled(rule, w[0]); });
+        ASSERT_NEAR(ours, truth, 1e-6 * (truth + 1))
+            << toString(rule) << " input " << testing::describe(input);
+        ++clipperWrong;
+      } else {
+        ++agreed;
+      }
+      ++compared;
+    }
+  }
+  EXPECT_EQ(compared, 1200);
+  // Clipper 1 is the oracle for the bulk of cases; it must not disagree more than rarely.
+  EXPECT_GT(agreed, compared * 9 / 10);
+  std::printf(
+      "simplify: %d cases, %d agree with Clipper 1, %d where Clipper 1 is wrong "
+      "(slab integration agrees with roiclip)\n",
+      compared, agreed, clipperWrong);
+}
+
+TEST(ClipperOracle, ClipAreasAgree) {
+  std::mt19937 rng(4048);
+  int compared = 0, agreed = 0, clipperWrong = 0;
+  for (int iter = 0; iter < 150; ++iter) {
+    const Paths a = randomSet(rng, iter % 3);
+    const Paths b = randomSet(rng, (iter / 3) % 3);
+    for (FillRule ra : kRules) {
+      for (FillRule rb : kRules) {
+        for (ClipOp op : kOps) {
+          ClipperLib::Clipper c;
+          c.AddPaths(toClipper(a), ClipperLib::ptSubject, true);
+          c.AddPaths(toClipper(b), ClipperLib::ptClip, true);
+          ClipperLib::Paths solution;
+          ASSERT_TRUE(c.Execute(toClipper(op), solution, toClipper(ra), toClipper(rb)));
+          const AreaAndPerimeter expected = measure(solution);
+          const double ours = clip(op, a, b, ra, rb).area();
+          if (std::fabs(ours - expected.area) > roundingTolerance(expected)) {
+            const double truth = testing::slabArea({&a, &b}, [&](const std::vector<long long>& w) {
+              return combine(op, isFilled(ra, w[0]), isFilled(rb, w[1]));
+            });
+            ASSERT_NEAR(ours, truth, 1e-6 * (truth + 1))
+                << toString(op) << " " << toString(ra) << "/" << toString(rb) << " A "
+                << testing::describe(a) << " B " << testing::describe(b);
+            ++clipperWrong;
+          } else {
+            ++agreed;
+          }
+          ++compared;
+        }
+      }
+    }
+  }
+  EXPECT_EQ(compared, 150 * 64);
+  EXPECT_GT(agreed, compared * 9 / 10);
+  std::printf(
+      "clip: %d cases, %d agree with Clipper 1, %d where Clipper 1 is wrong "
+      "(slab integration agrees with roiclip)\n",
+      compared, agreed, clipperWrong);
+}
+
+}  // namespace
+}  // namespace roiclip
