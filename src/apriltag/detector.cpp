@@ -1,2 +1,248 @@
-// Placeholder until the AprilTag detector lands.
-namespace roiclip::apriltag {}
+// roiclip::apriltag::Detector over libapriltag 3.3. AprilTag headers stay in this file (and the
+// other .cpp files): common/math_util.h defines a `max` macro.
+#include <roiclip/apriltag/detector.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <mutex>
+#include <sstream>
+#include <utility>
+
+#include <opencv2/imgproc.hpp>
+
+#include "homography.hpp"
+
+extern "C" {
+#include <apriltag/apriltag.h>
+#include <apriltag/common/zarray.h>
+#include <apriltag/tag16h5.h>
+#include <apriltag/tag25h9.h>
+#include <apriltag/tag36h10.h>
+#include <apriltag/tag36h11.h>
+#include <apriltag/tagCircle21h7.h>
+#include <apriltag/tagCircle49h12.h>
+#include <apriltag/tagCustom48h12.h>
+#include <apriltag/tagStandard41h12.h>
+#include <apriltag/tagStandard52h13.h>
+}
+
+namespace roiclip::apriltag {
+namespace {
+
+struct FamilyEntry {
+  const char* name;
+  apriltag_family_t* (*create)();
+  void (*destroy)(apriltag_family_t*);
+};
+
+constexpr FamilyEntry kFamilies[] = {
+    {"tag36h11", tag36h11_create, tag36h11_destroy},
+    {"tag25h9", tag25h9_create, tag25h9_destroy},
+    {"tag16h5", tag16h5_create, tag16h5_destroy},
+    {"tagStandard41h12", tagStandard41h12_create, tagStandard41h12_destroy},
+    {"tagStandard52h13", tagStandard52h13_create, tagStandard52h13_destroy},
+    {"tagCircle21h7", tagCircle21h7_create, tagCircle21h7_destroy},
+    {"tagCircle49h12", tagCircle49h12_create, tagCircle49h12_destroy},
+    {"tagCustom48h12", tagCustom48h12_create, tagCustom48h12_destroy},
+    {"tag36h10", tag36h10_create, tag36h10_destroy},
+};
+
+const FamilyEntry& findFamily(const std::string& name) {
+  for (const FamilyEntry& entry : kFamilies) {
+    if (name == entry.name) return entry;
+  }
+  std::ostringstream msg;
+  msg << "unknown AprilTag family '" << name << "' (available:";
+  for (const FamilyEntry& entry : kFamilies) msg << ' ' << entry.name;
+  msg << ')';
+  throw InvalidInputError(msg.str());
+}
+
+// Owning handle for one family object, destroyed with its own family's destroy function.
+class FamilyHandle {
+ public:
+  explicit FamilyHandle(const FamilyEntry& entry) : entry_(&entry), family_(entry.create()) {
+    if (family_ == nullptr) throw Error(std::string("cannot create AprilTag family ") + entry.name);
+  }
+  ~FamilyHandle() { entry_->destroy(family_); }
+  FamilyHandle(const FamilyHandle&) = delete;
+  FamilyHandle& operator=(const FamilyHandle&) = delete;
+  [[nodiscard]] apriltag_family_t* get() const { return family_; }
+
+ private:
+  const FamilyEntry* entry_;
+  apriltag_family_t* family_;
+};
+
+struct DetectorDeleter {
+  void operator()(apriltag_detector_t* td) const { apriltag_detector_destroy(td); }
+};
+struct DetectionsDeleter {
+  void operator()(zarray_t* detections) const { apriltag_detections_destroy(detections); }
+};
+// Debian's libapriltag 3.3 does not export image_u8_destroy; this is its body (the image and
+// its buffer are both malloc'd by image_u8_create_stride).
+struct ImageDeleter {
+  void operator()(image_u8_t* image) const {
+    std::free(image->buf);
+    std::free(image);
+  }
+};
+
+std::string matTypeName(const cv::Mat& image) {
+  static const char* const kDepths[] = {"8U", "8S", "16U", "16S", "32S", "32F", "64F", "16F"};
+  std::ostringstream out;
+  out << "CV_" << kDepths[image.depth()] << 'C' << image.channels();
+  return out.str();
+}
+
+void checkOptions(const DetectorOptions& o) {
+  if (!(o.quadDecimate >= 1.0f) || !std::isfinite(o.quadDecimate)) {
+    throw InvalidInputError("DetectorOptions::quadDecimate must be a finite value >= 1, got " +
+                            std::to_string(o.quadDecimate));
+  }
+  if (!std::isfinite(o.quadSigma))
+    throw InvalidInputError("DetectorOptions::quadSigma is not finite");
+  if (o.threads < 1) {
+    throw InvalidInputError("DetectorOptions::threads must be >= 1, got " +
+                            std::to_string(o.threads));
+  }
+  if (!std::isfinite(o.decodeSharpening) || o.decodeSharpening < 0) {
+    throw InvalidInputError("DetectorOptions::decodeSharpening must be finite and >= 0");
+  }
+  if (o.maxBitsCorrected < 0 || o.maxBitsCorrected > 3) {
+    throw InvalidInputError("DetectorOptions::maxBitsCorrected must be in 0..3, got " +
+                            std::to_string(o.maxBitsCorrected));
+  }
+}
+
+// libapriltag puts (0,0) at the top-left corner of the first pixel; OpenCV at its centre.
+constexpr double kAprilTagToOpenCv = -0.5;
+
+}  // namespace
+
+glm::dvec2 Detection::tagToImage(glm::dvec2 tagPoint) const {
+  return detail::applyHomography(homography, tagPoint);
+}
+
+std::vector<std::string> availableFamilies() {
+  std::vector<std::string> names;
+  for (const FamilyEntry& entry : kFamilies) names.emplace_back(entry.name);
+  return names;
+}
+
+int familySize(const std::string& family) {
+  FamilyHandle handle(findFamily(family));
+  return static_cast<int>(handle.get()->ncodes);
+}
+
+cv::Mat renderTag(const std::string& family, int id, int* blackBorderCells) {
+  FamilyHandle handle(findFamily(family));
+  if (id < 0 || id >= static_cast<int>(handle.get()->ncodes)) {
+    throw InvalidInputError("tag id " + std::to_string(id) + " is out of range for family " +
+                            family + " (0.." + std::to_string(handle.get()->ncodes - 1) + ")");
+  }
+  std::unique_ptr<image_u8_t, ImageDeleter> tag(apriltag_to_image(handle.get(), id));
+  if (!tag) throw Error("apriltag_to_image failed for " + family + " id " + std::to_string(id));
+  // The image_u8 rows are padded to `stride` bytes: wrap with that step, then copy out.
+  cv::Mat view(tag->height, tag->width, CV_8UC1, tag->buf, static_cast<size_t>(tag->stride));
+  if (blackBorderCells != nullptr) *blackBorderCells = handle.get()->width_at_border;
+  return view.clone();
+}
+
+struct Detector::Impl {
+  explicit Impl(DetectorOptions o) : options(std::move(o)), family(findFamily(options.family)) {
+    detector.reset(apriltag_detector_create());
+    if (!detector) throw Error("apriltag_detector_create failed");
+    detector->quad_decimate = options.quadDecimate;
+    detector->quad_sigma = options.quadSigma;
+    detector->refine_edges = options.refineEdges;
+    detector->nthreads = options.threads;
+    detector->decode_sharpening = options.decodeSharpening;
+    apriltag_detector_add_family_bits(detector.get(), family.get(), options.maxBitsCorrected);
+  }
+
+  DetectorOptions options;
+  // Declaration order matters: members are destroyed in reverse, so the detector (whose destroy
+  // function still walks its families' decode tables) goes before the family it uses.
+  FamilyHandle family;
+  std::unique_ptr<apriltag_detector_t, DetectorDeleter> detector;
+  std::mutex mutex;
+};
+
+Detector::Detector(DetectorOptions options) {
+  checkOptions(options);
+  impl_ = std::make_unique<Impl>(std::move(options));
+}
+
+Detector::~Detector() = default;
+Detector::Detector(Detector&&) noexcept = default;
+Detector& Detector::operator=(Detector&&) noexcept = default;
+
+const DetectorOptions& Detector::options() const {
+  if (!impl_) throw Error("roiclip::apriltag::Detector used after it was moved from");
+  return impl_->options;
+}
+
+std::vector<Detection> Detector::detect(const cv::Mat& image) const {
+  if (!impl_) throw Error("roiclip::apriltag::Detector used after it was moved from");
+  if (image.empty()) throw InvalidInputError("AprilTag detect: the input image is empty");
+  if (image.dims != 2 || image.depth() != CV_8U ||
+      (image.channels() != 1 && image.channels() != 3 && image.channels() != 4)) {
+    throw InvalidInputError(
+        "AprilTag detect: the input image must be 8-bit gray, BGR or BGRA (CV_8UC1/3/4), got " +
+        matTypeName(image));
+  }
+
+  cv::Mat gray;
+  if (image.channels() == 3) {
+    cv::cvtColor(image, gray, cv::COLOR_BGR2GRAY);
+  } else if (image.channels() == 4) {
+    cv::cvtColor(image, gray, cv::COLOR_BGRA2GRAY);
+  } else if (impl_->options.quadSigma != 0.0f && impl_->options.quadDecimate <= 1.0f) {
+    // Without decimation libapriltag blurs (or sharpens) the input buffer in place.
+    gray = image.clone();
+  } else {
+    gray = image;  // shared, no copy: libapriltag only reads it
+  }
+
+  // Wrap the Mat's buffer; `stride` is the row step so ROI views work without a copy.
+  image_u8_t wrapped{gray.cols, gray.rows, static_cast<int32_t>(gray.step[0]), gray.data};
+
+  std::vector<Detection> result;
+  {
+    std::lock_guard<std::mutex> lock(impl_->mutex);
+    std::unique_ptr<zarray_t, DetectionsDeleter> found(
+        apriltag_detector_detect(impl_->detector.get(), &wrapped));
+    if (!found) throw Error("apriltag_detector_detect failed");
+    const int count = zarray_size(found.get());
+    result.reserve(static_cast<size_t>(count));
+    for (int i = 0; i < count; ++i) {
+      apriltag_detection_t* det = nullptr;
+      zarray_get(found.get(), i, &det);
+      Detection d;
+      d.id = det->id;
+      d.family = det->family->name;
+      d.hamming = det->hamming;
+      d.decisionMargin = det->decision_margin;
+      d.centre = {det->c[0] + kAprilTagToOpenCv, det->c[1] + kAprilTagToOpenCv};
+      for (int k = 0; k < 4; ++k) {
+        d.corners[k] = {det->p[k][0] + kAprilTagToOpenCv, det->p[k][1] + kAprilTagToOpenCv};
+      }
+      result.push_back(std::move(d));
+    }
+  }
+  for (Detection& d : result) {
+    // Fit to the (shifted) corners in our tag frame rather than converting libapriltag's H, whose
+    // ideal frame is 2 units wide and in its pixel convention.
+    d.homography = detail::tagFrameHomography(d.corners);
+  }
+  std::sort(result.begin(), result.end(), [](const Detection& a, const Detection& b) {
+    return a.id != b.id ? a.id < b.id : a.centre.x < b.centre.x;
+  });
+  return result;
+}
+
+}  // namespace roiclip::apriltag

@@ -1,0 +1,125 @@
+// roiclip::apriltag: AprilTag detection on cv::Mat images (a wrapper over libapriltag 3.3).
+//
+// Pixel convention: every coordinate this header returns is in OpenCV's convention, (0,0) is the
+// CENTRE of the top-left pixel, x right, y down (see roiclip/geometry.hpp). libapriltag itself
+// puts (0,0) at the top-left CORNER of the first pixel; the wrapper subtracts that 0.5 px.
+//
+// AprilTag's own headers are deliberately not included here: common/math_util.h defines a `max`
+// macro that breaks <algorithm> in any file that includes it.
+#pragma once
+
+#include <array>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <glm/mat3x3.hpp>
+#include <glm/vec2.hpp>
+#include <opencv2/core/mat.hpp>
+
+#include <roiclip/error.hpp>
+
+namespace roiclip::apriltag {
+
+/// Index of a tag corner in Detection::corners. This is libapriltag's own order: it runs
+/// counter-clockwise on screen (y down) starting at the bottom-left corner of an upright tag.
+/// "Upright" means the tag looks like the image apriltag_to_image() renders for its id, with
+/// no rotation.
+enum class Corner : int {
+  BottomLeft = 0,
+  BottomRight = 1,
+  TopRight = 2,
+  TopLeft = 3,
+};
+
+/// One decoded tag. All coordinates in OpenCV pixel-centre convention.
+struct Detection {
+  int id = -1;
+  std::string family;           ///< e.g. "tag36h11"
+  int hamming = 0;              ///< number of corrected bit errors
+  double decisionMargin = 0;    ///< libapriltag's decode quality (higher is better)
+  glm::dvec2 centre{0.0, 0.0};  ///< image of the tag centre (the homography's (0,0))
+  /// Outer corners of the black border, indexed by Corner (libapriltag's order, see Corner).
+  std::array<glm::dvec2, 4> corners{};
+  /// Image-from-tag homography. The tag frame has its origin at the tag centre, x to the right
+  /// and y down when the tag is upright, and the unit is the side of the black border: the
+  /// corners are (-0.5,-0.5) TopLeft, (0.5,-0.5) TopRight, (0.5,0.5) BottomRight,
+  /// (-0.5,0.5) BottomLeft. Column-major GLM matrix acting on homogeneous (x, y, 1).
+  glm::dmat3 homography{1.0};
+
+  /// The corner `c` (same as corners[int(c)]).
+  [[nodiscard]] glm::dvec2 corner(Corner c) const { return corners[static_cast<int>(c)]; }
+  /// Map a point given in the tag frame (see homography) into the image.
+  [[nodiscard]] glm::dvec2 tagToImage(glm::dvec2 tagPoint) const;
+};
+
+/// Detector settings; the names follow libapriltag's apriltag_detector_t fields.
+struct DetectorOptions {
+  /// Tag family name; see availableFamilies(). Unknown names throw InvalidInputError.
+  std::string family = "tag36h11";
+  /// Detect quads on an image decimated by this factor (>= 1). Faster, less accurate corners.
+  float quadDecimate = 1.0f;
+  /// Gaussian blur sigma applied to the quad-detection image (0 = off, negative = sharpen).
+  /// The caller's image is never modified (see Detector::detect).
+  float quadSigma = 0.0f;
+  /// Snap quad edges to strong gradients (recommended with quadDecimate > 1).
+  bool refineEdges = true;
+  /// libapriltag worker threads for one detect() call (>= 1).
+  int threads = 1;
+  /// Sharpening of the decoded payload image (libapriltag default 0.25).
+  double decodeSharpening = 0.25;
+  /// Number of bit errors the decoder may correct (0..3). 2 is libapriltag's default; larger
+  /// values need much more memory for the big families.
+  int maxBitsCorrected = 2;
+};
+
+/// Family names this build supports (those libapriltag 3.3 ships): tag36h11, tag25h9, tag16h5,
+/// tagStandard41h12, tagStandard52h13, tagCircle21h7, tagCircle49h12, tagCustom48h12, tag36h10.
+std::vector<std::string> availableFamilies();
+
+/// Number of distinct ids in a family (valid ids are 0 .. familySize-1).
+/// @throws InvalidInputError for an unknown family name.
+int familySize(const std::string& family);
+
+/// Render tag `id` of `family` as libapriltag draws it: an 8-bit image (0 black, 255 white) of
+/// total_width x total_width cells, one pixel per cell, including the white outer border.
+/// @param[out] blackBorderCells side of the black border in cells (e.g. 8 for tag36h11).
+/// @throws InvalidInputError for an unknown family or an id out of range.
+cv::Mat renderTag(const std::string& family, int id, int* blackBorderCells = nullptr);
+
+/// An AprilTag detector for one family.
+///
+/// Ownership: each Detector creates its own libapriltag family object (libapriltag must not
+/// share one family between two detectors: both would free its decode table) and destroys the
+/// libapriltag detector before that family.
+///
+/// Threads: detect() may be called from several threads at once on the same Detector; the calls
+/// are serialised by an internal mutex because libapriltag's detector keeps per-call state.
+/// For parallel detection give each thread its own Detector.
+class Detector {
+ public:
+  /// @throws InvalidInputError for an unknown family or out-of-range options (the message names
+  ///         the option).
+  explicit Detector(DetectorOptions options = {});
+  ~Detector();
+  Detector(Detector&&) noexcept;
+  Detector& operator=(Detector&&) noexcept;
+  Detector(const Detector&) = delete;
+  Detector& operator=(const Detector&) = delete;
+
+  /// Detect all tags of the family in `image`.
+  /// @param image 8-bit gray (CV_8UC1, used without a copy, any row step), BGR (CV_8UC3) or
+  ///        BGRA (CV_8UC4, converted to gray). Never modified.
+  /// @return detections sorted by id (then by centre x), coordinates in OpenCV convention.
+  /// @throws InvalidInputError if the image is empty or not 8-bit with 1, 3 or 4 channels.
+  /// @throws Error if this Detector was moved from.
+  [[nodiscard]] std::vector<Detection> detect(const cv::Mat& image) const;
+
+  [[nodiscard]] const DetectorOptions& options() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace roiclip::apriltag

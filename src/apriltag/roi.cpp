@@ -1,0 +1,338 @@
+// ROI builders from AprilTag detections.
+#include <roiclip/apriltag/roi.hpp>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+#include <opencv2/calib3d.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include "homography.hpp"
+
+namespace roiclip::apriltag {
+namespace {
+
+std::string idList(const std::vector<int>& ids) {
+  std::ostringstream out;
+  out << '[';
+  for (std::size_t i = 0; i < ids.size(); ++i) out << (i ? " " : "") << ids[i];
+  out << ']';
+  return out.str();
+}
+
+// Index detections by id; `needed` decides which ids must be present exactly once.
+struct Lookup {
+  std::map<int, std::vector<const Detection*>> byId;
+  MissingTags status;
+
+  Lookup(const std::vector<Detection>& detections, std::vector<int> needed, int minimumNeeded) {
+    for (const Detection& d : detections) byId[d.id].push_back(&d);
+    std::sort(needed.begin(), needed.end());
+    needed.erase(std::unique(needed.begin(), needed.end()), needed.end());
+    status.needed = needed;
+    status.minimumNeeded = minimumNeeded;
+    for (const auto& [id, list] : byId) status.seen.push_back(id);
+    for (int id : needed) {
+      auto it = byId.find(id);
+      if (it == byId.end()) {
+        status.missing.push_back(id);
+      } else if (it->second.size() > 1) {
+        status.duplicated.push_back(id);
+      }
+    }
+  }
+  [[nodiscard]] bool ok() const {
+    const int found = static_cast<int>(status.needed.size() - status.missing.size());
+    return status.duplicated.empty() && found >= status.minimumNeeded;
+  }
+  [[nodiscard]] const Detection& get(int id) const { return *byId.at(id).front(); }
+};
+
+glm::dvec2 anchorPoint(const Detection& d, TagAnchor anchor) {
+  switch (anchor) {
+    case TagAnchor::Centre:
+      return d.centre;
+    case TagAnchor::BottomLeft:
+      return d.corner(Corner::BottomLeft);
+    case TagAnchor::BottomRight:
+      return d.corner(Corner::BottomRight);
+    case TagAnchor::TopRight:
+      return d.corner(Corner::TopRight);
+    case TagAnchor::TopLeft:
+      return d.corner(Corner::TopLeft);
+  }
+  return d.centre;
+}
+
+using Json = nlohmann::json;
+
+glm::dvec2 parsePoint(const Json& j, const std::string& where) {
+  if (!j.is_array() || j.size() != 2 || !j[0].is_number() || !j[1].is_number()) {
+    throw InvalidInputError(where + ": expected a point [x, y]");
+  }
+  const glm::dvec2 p{j[0].get<double>(), j[1].get<double>()};
+  if (!std::isfinite(p.x) || !std::isfinite(p.y)) throw InvalidInputError(where + ": not finite");
+  return p;
+}
+
+const Json& field(const Json& object, const char* name, const std::string& where) {
+  auto it = object.find(name);
+  if (it == object.end()) throw InvalidInputError(where + ": missing field \"" + name + "\"");
+  return *it;
+}
+
+}  // namespace
+
+std::string MissingTags::describe() const {
+  std::ostringstream out;
+  out << "needed ";
+  if (minimumNeeded < static_cast<int>(needed.size()))
+    out << "at least " << minimumNeeded << " of ";
+  out << "tags " << idList(needed) << ", seen " << idList(seen);
+  if (!missing.empty()) out << ": missing " << idList(missing);
+  if (!duplicated.empty())
+    out << (missing.empty() ? ": " : "; ") << "seen more than once " << idList(duplicated);
+  return out.str();
+}
+
+MissingTagsError::MissingTagsError(MissingTags info)
+    : Error("AprilTag ROI unavailable: " + info.describe()), info_(std::move(info)) {}
+
+TagAnchor parseTagAnchor(const std::string& text) {
+  std::string t;
+  for (char c : text)
+    t += c == '_' ? '-' : static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (t == "centre" || t == "center") return TagAnchor::Centre;
+  if (t == "bottom-left") return TagAnchor::BottomLeft;
+  if (t == "bottom-right") return TagAnchor::BottomRight;
+  if (t == "top-right") return TagAnchor::TopRight;
+  if (t == "top-left") return TagAnchor::TopLeft;
+  throw InvalidInputError("unknown tag anchor '" + text +
+                          "' (expected centre, top-left, top-right, bottom-right or bottom-left)");
+}
+
+RoiResult polygonThroughTags(const std::vector<Detection>& detections, const std::vector<int>& ids,
+                             TagAnchor anchor) {
+  if (ids.size() < 3) {
+    throw InvalidInputError("tag polygon: needs at least 3 tag ids, got " +
+                            std::to_string(ids.size()));
+  }
+  if (std::set<int>(ids.begin(), ids.end()).size() != ids.size()) {
+    throw InvalidInputError("tag polygon: an id is listed twice in " + idList(ids));
+  }
+  const Lookup lookup(detections, ids, static_cast<int>(ids.size()));
+  if (!lookup.ok()) return lookup.status;
+  Path path;
+  for (int id : ids) path.push_back(anchorPoint(lookup.get(id), anchor));
+  return Paths{std::move(path)};
+}
+
+RoiResult convexHullOfTags(const std::vector<Detection>& detections, const std::vector<int>& ids) {
+  std::vector<cv::Point2d> points;
+  if (ids.empty()) {
+    if (detections.empty()) {
+      MissingTags none;
+      none.minimumNeeded = 1;
+      return none;  // nothing detected at all
+    }
+    for (const Detection& d : detections) {
+      for (const glm::dvec2& c : d.corners) points.emplace_back(c.x, c.y);
+    }
+  } else {
+    const Lookup lookup(detections, ids,
+                        static_cast<int>(std::set<int>(ids.begin(), ids.end()).size()));
+    if (!lookup.ok()) return lookup.status;
+    for (int id : lookup.status.needed) {
+      for (const glm::dvec2& c : lookup.get(id).corners) points.emplace_back(c.x, c.y);
+    }
+  }
+  std::vector<cv::Point2d> hull;
+  cv::convexHull(points, hull);
+  Path path;
+  for (const cv::Point2d& p : hull) path.push_back({p.x, p.y});
+  if (signedArea(path) > 0) std::reverse(path.begin(), path.end());
+  return Paths{std::move(path)};
+}
+
+RoiResult tagFrameRoi(const std::vector<Detection>& detections, int id,
+                      const Paths& tagFramePaths) {
+  const Lookup lookup(detections, {id}, 1);
+  if (!lookup.ok()) return lookup.status;
+  return mapPaths(lookup.get(id).homography, tagFramePaths);
+}
+
+Board Board::fromJson(const std::string& text, const std::string& source) {
+  Json j;
+  try {
+    j = Json::parse(text);
+  } catch (const Json::parse_error& e) {
+    throw InvalidInputError(source + ": malformed JSON: " + e.what());
+  }
+  if (!j.is_object()) throw InvalidInputError(source + ": expected a JSON object");
+  Board board;
+  try {
+    if (j.contains("family")) board.family = j.at("family").get<std::string>();
+    int size = 0;
+    try {
+      size = familySize(board.family);
+    } catch (const InvalidInputError& e) {
+      throw InvalidInputError(source + ": " + e.what());
+    }
+    const Json& tags = field(j, "tags", source);
+    if (!tags.is_array() || tags.empty())
+      throw InvalidInputError(source + ": \"tags\" must be a non-empty array");
+    for (std::size_t i = 0; i < tags.size(); ++i) {
+      const std::string where = source + ": tags[" + std::to_string(i) + "]";
+      const Json& t = tags[i];
+      const Json& idJson = field(t, "id", where);
+      if (!idJson.is_number_integer())
+        throw InvalidInputError(where + ": \"id\" must be an integer");
+      const int id = idJson.get<int>();
+      if (id < 0 || id >= size) {
+        throw InvalidInputError(where + ": unknown tag id " + std::to_string(id) + " (family " +
+                                board.family + " has ids 0.." + std::to_string(size - 1) + ")");
+      }
+      if (board.tags.count(id))
+        throw InvalidInputError(where + ": tag id " + std::to_string(id) + " listed twice");
+      std::array<glm::dvec2, 4> corners{};
+      if (t.contains("corners")) {
+        const Json& c = t.at("corners");
+        if (!c.is_object()) {
+          throw InvalidInputError(where +
+                                  ": \"corners\" must be an object with top_left, top_right, "
+                                  "bottom_right, bottom_left");
+        }
+        corners[static_cast<int>(Corner::TopLeft)] =
+            parsePoint(field(c, "top_left", where), where + ".top_left");
+        corners[static_cast<int>(Corner::TopRight)] =
+            parsePoint(field(c, "top_right", where), where + ".top_right");
+        corners[static_cast<int>(Corner::BottomRight)] =
+            parsePoint(field(c, "bottom_right", where), where + ".bottom_right");
+        corners[static_cast<int>(Corner::BottomLeft)] =
+            parsePoint(field(c, "bottom_left", where), where + ".bottom_left");
+      } else {
+        // Shorthand: an upright, axis-aligned tag in a y-down board frame.
+        const glm::dvec2 c = parsePoint(field(t, "centre", where), where + ".centre");
+        const Json& sizeJson = field(t, "size", where);
+        if (!sizeJson.is_number() || !(sizeJson.get<double>() > 0)) {
+          throw InvalidInputError(where + ": \"size\" must be a positive number");
+        }
+        const double h = sizeJson.get<double>() / 2;
+        for (int k = 0; k < 4; ++k) {
+          corners[k] =
+              c +
+              2 * h * glm::dvec2{detail::kTagFrameCorners[k][0], detail::kTagFrameCorners[k][1]};
+        }
+      }
+      board.tags[id] = corners;
+    }
+    if (j.contains("rois")) {
+      const Json& rois = j.at("rois");
+      if (!rois.is_array()) throw InvalidInputError(source + ": \"rois\" must be an array");
+      for (std::size_t i = 0; i < rois.size(); ++i) {
+        const std::string where = source + ": rois[" + std::to_string(i) + "]";
+        BoardRoi roi;
+        roi.name = field(rois[i], "name", where).get<std::string>();
+        const Json& paths = field(rois[i], "paths", where);
+        if (!paths.is_array() || paths.empty())
+          throw InvalidInputError(where + ": \"paths\" must be a non-empty array");
+        for (std::size_t p = 0; p < paths.size(); ++p) {
+          const std::string pathWhere = where + ".paths[" + std::to_string(p) + "]";
+          if (!paths[p].is_array())
+            throw InvalidInputError(pathWhere + ": expected an array of points");
+          Path path;
+          for (std::size_t k = 0; k < paths[p].size(); ++k) {
+            path.push_back(parsePoint(paths[p][k], pathWhere + "[" + std::to_string(k) + "]"));
+          }
+          roi.paths.push_back(std::move(path));
+        }
+        board.rois.push_back(std::move(roi));
+      }
+    }
+  } catch (const Json::exception& e) {
+    // Type errors (a string where a number belongs, ...).
+    throw InvalidInputError(source + ": " + e.what());
+  }
+  return board;
+}
+
+Board Board::load(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InvalidInputError("cannot read board file '" + path + "'");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return fromJson(text.str(), path);
+}
+
+const BoardRoi& Board::roi(const std::string& name) const {
+  for (const BoardRoi& r : rois) {
+    if (r.name == name) return r;
+  }
+  std::string names;
+  for (const BoardRoi& r : rois) names += (names.empty() ? "" : ", ") + r.name;
+  throw InvalidInputError("board has no ROI named '" + name + "' (it has: " + names + ")");
+}
+
+TagResult<BoardFit> fitBoard(const Board& board, const std::vector<Detection>& detections,
+                             double ransacThreshold) {
+  std::vector<Detection> ofFamily;
+  for (const Detection& d : detections) {
+    if (d.family == board.family) ofFamily.push_back(d);
+  }
+  std::vector<int> needed;
+  for (const auto& [id, corners] : board.tags) needed.push_back(id);
+  const Lookup lookup(ofFamily, needed, 1);
+  if (!lookup.ok()) return lookup.status;
+
+  BoardFit fit;
+  std::vector<cv::Point2d> boardPoints;
+  std::vector<cv::Point2d> imagePoints;
+  for (const auto& [id, corners] : board.tags) {
+    if (!lookup.byId.count(id)) continue;
+    fit.tagsUsed.push_back(id);
+    const Detection& d = lookup.get(id);
+    for (int k = 0; k < 4; ++k) {
+      boardPoints.emplace_back(corners[k].x, corners[k].y);
+      imagePoints.emplace_back(d.corners[k].x, d.corners[k].y);
+    }
+  }
+  fit.cornersUsed = static_cast<int>(boardPoints.size());
+  cv::Mat mask;
+  // One tag gives exactly 4 correspondences: nothing for RANSAC to reject.
+  const int method = fit.tagsUsed.size() > 1 ? cv::RANSAC : 0;
+  cv::Mat h = cv::findHomography(boardPoints, imagePoints, mask, method, ransacThreshold);
+  if (h.empty()) throw Error("board homography fit failed (degenerate tag corners)");
+  fit.imageFromBoard = detail::toGlm(cv::Matx33d(h));
+  double sum = 0;
+  for (std::size_t i = 0; i < boardPoints.size(); ++i) {
+    if (!mask.empty() && mask.at<unsigned char>(static_cast<int>(i)) == 0) continue;
+    const glm::dvec2 p = applyHomography(fit.imageFromBoard, {boardPoints[i].x, boardPoints[i].y});
+    const double dx = p.x - imagePoints[i].x, dy = p.y - imagePoints[i].y;
+    sum += dx * dx + dy * dy;
+    ++fit.inliers;
+  }
+  fit.rmsError = fit.inliers > 0 ? std::sqrt(sum / fit.inliers) : 0.0;
+  return fit;
+}
+
+RoiResult boardRoi(const Board& board, const std::vector<Detection>& detections,
+                   const std::string& roiName, double ransacThreshold) {
+  Paths boardPaths;
+  if (roiName.empty()) {
+    if (board.rois.empty()) throw InvalidInputError("board has no ROIs");
+    for (const BoardRoi& r : board.rois)
+      boardPaths.insert(boardPaths.end(), r.paths.begin(), r.paths.end());
+  } else {
+    boardPaths = board.roi(roiName).paths;
+  }
+  const TagResult<BoardFit> fit = fitBoard(board, detections, ransacThreshold);
+  if (!fit) return fit.missing();
+  return mapPaths(fit.value().imageFromBoard, boardPaths);
+}
+
+}  // namespace roiclip::apriltag
