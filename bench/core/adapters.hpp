@@ -7,10 +7,10 @@
 #include <memory>
 #include <vector>
 
+#include <geos_c.h>
 #include <boost/geometry.hpp>
 #include <boost/geometry/geometries/point_xy.hpp>
 #include <clipper.hpp>
-#include <geos_c.h>
 
 #include <roiclip/geometry.hpp>
 

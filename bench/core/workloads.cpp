@@ -123,8 +123,8 @@ Path perspectiveQuad(const Path& ring, std::uint32_t seed) {
     const double jy = 1.0 + 0.3 * (unit(rng) - 0.5);
     const Point local{u.x * half.x * jx, u.y * half.y * jy};
     const Point rotated{c * local.x - s * local.y, s * local.x + c * local.y};
-    quad.push_back({snapToGrid(centre.x + rotated.x + 0.37),
-                    snapToGrid(centre.y + rotated.y + 0.61)});
+    quad.push_back(
+        {snapToGrid(centre.x + rotated.x + 0.37), snapToGrid(centre.y + rotated.y + 0.61)});
   }
   if (signedArea(quad) < 0.0) std::reverse(quad.begin(), quad.end());
   return quad;
