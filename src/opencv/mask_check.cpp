@@ -92,6 +92,26 @@ cv::Mat fillPolyMask(const Paths& paths, cv::Size size) {
   return mask;
 }
 
+// The raster counterpart of a boolean operation on 0/255 masks.
+cv::Mat combine(ClipOp op, const cv::Mat& a, const cv::Mat& b) {
+  cv::Mat out;
+  switch (op) {
+    case ClipOp::Intersection:
+      cv::bitwise_and(a, b, out);
+      break;
+    case ClipOp::Union:
+      cv::bitwise_or(a, b, out);
+      break;
+    case ClipOp::Difference:
+      cv::bitwise_and(a, ~b, out);
+      break;
+    case ClipOp::Xor:
+      cv::bitwise_xor(a, b, out);
+      break;
+  }
+  return out;
+}
+
 }  // namespace
 
 std::ostream& operator<<(std::ostream& os, const MaskComparison& c) {
@@ -178,20 +198,20 @@ MaskComparison compareMasks(cv::InputArray expectedIn, cv::InputArray actualIn, 
 MaskCheck checkRoiClip(const Paths& subject, const Paths& roi, FillRule subjectRule,
                        FillRule roiRule, cv::Size size, const MaskCheckOptions& options) {
   MaskCheck check;
-  check.clipped = clip(ClipOp::Intersection, subject, roi, subjectRule, roiRule, options.grid);
+  check.clipped = clip(options.op, subject, roi, subjectRule, roiRule, options.grid);
   const cv::Mat vectorMask = rasterize(check.clipped, size, options.grid);
 
   Paths edges = subject;
   edges.insert(edges.end(), roi.begin(), roi.end());
 
-  cv::Mat rasterMask;
-  cv::bitwise_and(rasterize(subject, subjectRule, size, options.grid),
-                  rasterize(roi, roiRule, size, options.grid), rasterMask);
+  const cv::Mat rasterMask =
+      combine(options.op, rasterize(subject, subjectRule, size, options.grid),
+              rasterize(roi, roiRule, size, options.grid));
   check.vectorVsRaster = compareMasks(rasterMask, vectorMask, options.exactBand, edges);
 
   if (subjectRule == FillRule::EvenOdd && roiRule == FillRule::EvenOdd) {
-    cv::Mat openCvMask;
-    cv::bitwise_and(fillPolyMask(subject, size), fillPolyMask(roi, size), openCvMask);
+    const cv::Mat openCvMask =
+        combine(options.op, fillPolyMask(subject, size), fillPolyMask(roi, size));
     check.vectorVsOpenCv = compareMasks(openCvMask, vectorMask, options.openCvBand, edges);
   }
   return check;
