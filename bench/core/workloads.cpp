@@ -116,7 +116,9 @@ Path perspectiveQuad(const Path& ring, std::uint32_t seed) {
   const double c = std::cos(angle), s = std::sin(angle);
   // Corners in order of increasing angle in the raw frame; the +-15% jitter keeps them convex
   // while breaking any symmetry (a real tag-derived ROI is a perspective-distorted square).
-  const Point unitCorners[4] = {{0.5, 0.5}, {-0.5, 0.5}, {-0.5, -0.5}, {0.5, -0.5}};
+  // At 0.8 of the half-extent the corners stick out of a round blob and the edge midpoints stay
+  // inside it, so the contour crosses every side of the quad.
+  const Point unitCorners[4] = {{0.8, 0.8}, {-0.8, 0.8}, {-0.8, -0.8}, {0.8, -0.8}};
   Path quad;
   for (const Point& u : unitCorners) {
     const double jx = 1.0 + 0.3 * (unit(rng) - 0.5);
