@@ -151,10 +151,12 @@ RoiResult convexHullOfTags(const std::vector<Detection>& detections, const std::
       for (const glm::dvec2& c : lookup.get(id).corners) points.emplace_back(c.x, c.y);
     }
   }
-  std::vector<cv::Point2d> hull;
-  cv::convexHull(points, hull);
+  // convexHull takes float or int points; hull by index, then keep the double coordinates.
+  std::vector<cv::Point2f> asFloat(points.begin(), points.end());
+  std::vector<int> hull;
+  cv::convexHull(asFloat, hull, false, false);
   Path path;
-  for (const cv::Point2d& p : hull) path.push_back({p.x, p.y});
+  for (int i : hull) path.push_back({points[i].x, points[i].y});
   if (signedArea(path) > 0) std::reverse(path.begin(), path.end());
   return Paths{std::move(path)};
 }
@@ -303,11 +305,22 @@ TagResult<BoardFit> fitBoard(const Board& board, const std::vector<Detection>& d
   }
   fit.cornersUsed = static_cast<int>(boardPoints.size());
   cv::Mat mask;
-  // One tag gives exactly 4 correspondences: nothing for RANSAC to reject.
-  const int method = fit.tagsUsed.size() > 1 ? cv::RANSAC : 0;
-  cv::Mat h = cv::findHomography(boardPoints, imagePoints, mask, method, ransacThreshold);
-  if (h.empty()) throw Error("board homography fit failed (degenerate tag corners)");
-  fit.imageFromBoard = detail::toGlm(cv::Matx33d(h));
+  if (fit.tagsUsed.size() == 1) {
+    // One tag gives exactly 4 correspondences: solve them exactly, in double precision
+    // (findHomography works in float).
+    glm::dvec2 from[4];
+    glm::dvec2 to[4];
+    for (int k = 0; k < 4; ++k) {
+      from[k] = {boardPoints[k].x, boardPoints[k].y};
+      to[k] = {imagePoints[k].x, imagePoints[k].y};
+    }
+    fit.imageFromBoard = detail::homographyFrom4(from, to);
+  } else {
+    const cv::Mat h =
+        cv::findHomography(boardPoints, imagePoints, mask, cv::RANSAC, ransacThreshold);
+    if (h.empty()) throw Error("board homography fit failed (degenerate tag corners)");
+    fit.imageFromBoard = detail::toGlm(cv::Matx33d(h));
+  }
   double sum = 0;
   for (std::size_t i = 0; i < boardPoints.size(); ++i) {
     if (!mask.empty() && mask.at<unsigned char>(static_cast<int>(i)) == 0) continue;

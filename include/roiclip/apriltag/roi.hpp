@@ -18,6 +18,7 @@
 #include <glm/vec2.hpp>
 
 #include <roiclip/apriltag/detector.hpp>
+#include <roiclip/apriltag/projective.hpp>
 #include <roiclip/error.hpp>
 #include <roiclip/geometry.hpp>
 

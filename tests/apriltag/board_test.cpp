@@ -1,0 +1,186 @@
+// Board files and the projective helpers: parsing, every error path, exact fits.
+#include <roiclip/apriltag/projective.hpp>
+#include <roiclip/apriltag/roi.hpp>
+
+#include <string>
+
+#include <gtest/gtest.h>
+
+namespace ra = roiclip::apriltag;
+using ra::Corner;
+
+namespace {
+
+const std::string kData = std::string(ROICLIP_TEST_DATA) + "/apriltag/";
+
+// Expect `fn` to throw InvalidInputError whose message contains every string in `parts`.
+template <class Fn>
+void expectInvalid(Fn fn, std::initializer_list<const char*> parts) {
+  try {
+    fn();
+    ADD_FAILURE() << "no exception";
+  } catch (const roiclip::InvalidInputError& e) {
+    for (const char* part : parts) {
+      EXPECT_NE(std::string(e.what()).find(part), std::string::npos) << e.what() << " / " << part;
+    }
+  }
+}
+
+TEST(Board, LoadsCornersAndTheCentreSizeShorthand) {
+  const ra::Board board = ra::Board::load(kData + "shorthand.json");
+  EXPECT_EQ(board.family, "tag36h11");
+  ASSERT_EQ(board.tags.size(), 2u);
+  const auto& zero = board.tags.at(0);
+  EXPECT_EQ(zero[static_cast<int>(Corner::TopLeft)], glm::dvec2(18, 18));
+  EXPECT_EQ(zero[static_cast<int>(Corner::TopRight)], glm::dvec2(82, 18));
+  EXPECT_EQ(zero[static_cast<int>(Corner::BottomRight)], glm::dvec2(82, 82));
+  EXPECT_EQ(zero[static_cast<int>(Corner::BottomLeft)], glm::dvec2(18, 82));
+  const auto& one = board.tags.at(1);
+  EXPECT_EQ(one[static_cast<int>(Corner::TopLeft)], glm::dvec2(318, 18));
+  EXPECT_EQ(one[static_cast<int>(Corner::BottomLeft)], glm::dvec2(318, 82));
+  ASSERT_EQ(board.rois.size(), 2u);
+  EXPECT_EQ(board.roi("two_rings").paths.size(), 2u);
+  EXPECT_EQ(board.roi("strip").paths[0][2], glm::dvec2(300, 80));
+}
+
+TEST(Board, BundledBoardLoads) {
+  const ra::Board board = ra::Board::load(std::string(ROICLIP_IMAGES) + "/board.json");
+  EXPECT_EQ(board.tags.size(), 4u);
+  EXPECT_NO_THROW((void)board.roi("inspection"));
+  EXPECT_NO_THROW((void)board.roi("window"));
+}
+
+TEST(BoardErrors, MalformedJson) {
+  expectInvalid([] { (void)ra::Board::load(kData + "malformed.json"); },
+                {"malformed.json", "malformed JSON"});
+  expectInvalid([] { (void)ra::Board::fromJson("[1, 2]", "inline"); }, {"inline", "object"});
+}
+
+TEST(BoardErrors, UnknownTagId) {
+  expectInvalid([] { (void)ra::Board::load(kData + "unknown_id.json"); },
+                {"unknown_id.json", "tags[1]", "unknown tag id 587", "0..586"});
+  expectInvalid(
+      [] { (void)ra::Board::fromJson(R"({"tags":[{"id":-1,"centre":[0,0],"size":1}]})"); },
+      {"unknown tag id -1"});
+}
+
+TEST(BoardErrors, UnknownFamily) {
+  expectInvalid([] { (void)ra::Board::load(kData + "unknown_family.json"); },
+                {"unknown_family.json", "tag37h12"});
+}
+
+TEST(BoardErrors, MissingFieldsAndWrongTypes) {
+  expectInvalid([] { (void)ra::Board::load(kData + "missing_corner.json"); },
+                {"tags[0]", "bottom_left"});
+  expectInvalid([] { (void)ra::Board::fromJson(R"({"family":"tag36h11"})"); }, {"tags"});
+  expectInvalid(
+      [] { (void)ra::Board::fromJson(R"({"tags":[{"id":"zero","centre":[0,0],"size":1}]})"); },
+      {"integer"});
+  expectInvalid(
+      [] { (void)ra::Board::fromJson(R"({"tags":[{"id":0,"centre":[0,"x"],"size":1}]})"); },
+      {"centre"});
+  expectInvalid(
+      [] { (void)ra::Board::fromJson(R"({"tags":[{"id":0,"centre":[0,0],"size":-3}]})"); },
+      {"size"});
+  expectInvalid(
+      [] {
+        (void)ra::Board::fromJson(
+            R"({"tags":[{"id":0,"centre":[0,0],"size":1},{"id":0,"centre":[5,0],"size":1}]})");
+      },
+      {"listed twice"});
+  expectInvalid(
+      [] {
+        (void)ra::Board::fromJson(
+            R"({"tags":[{"id":0,"centre":[0,0],"size":1}],"rois":[{"name":"a","paths":[[[0,0],[1]]]}]})");
+      },
+      {"rois[0]", "paths[0][1]"});
+  expectInvalid([] { (void)ra::Board::load(kData + "does_not_exist.json"); },
+                {"does_not_exist.json"});
+  const ra::Board board = ra::Board::load(kData + "shorthand.json");
+  expectInvalid([&] { (void)board.roi("nope"); }, {"nope", "strip", "two_rings"});
+}
+
+TEST(Projective, ApplyAndMapPaths) {
+  // x' = (2x + 1) / (0.001 x + 1), y' = (3y - 2) / (0.001 x + 1); GLM is column-major.
+  const glm::dmat3 h(2, 0, 0.001, 0, 3, 0, 1, -2, 1);
+  const glm::dvec2 p = ra::applyHomography(h, {10, 20});
+  EXPECT_DOUBLE_EQ(p.x, 21 / 1.01);
+  EXPECT_DOUBLE_EQ(p.y, 58 / 1.01);
+  const roiclip::Paths mapped = ra::mapPaths(h, {{{0, 0}, {10, 0}, {10, 10}}});
+  ASSERT_EQ(mapped.size(), 1u);
+  EXPECT_EQ(mapped[0][0], glm::dvec2(1, -2));
+  // A polygon straddling the line x = -1000 (w = 0) has no bounded image.
+  expectInvalid(
+      [&] {
+        (void)ra::mapPaths(h, {{{0, 0}, {-2000, 0}, {-2000, 10}}});
+      },
+      {"path 0 vertex 1", "infinity"});
+  EXPECT_THROW((void)ra::applyHomography(h, {-1000, 5}), roiclip::Error);
+}
+
+TEST(Projective, FitBoardFromOneSyntheticTagIsExact) {
+  ra::Board board = ra::Board::load(kData + "shorthand.json");
+  // A known homography; fake a detection of tag 0 by mapping its board corners.
+  const glm::dmat3 h(1.5, 0.2, 0.0004, -0.1, 1.4, 0.0002, 30, 40, 1);
+  ra::Detection d;
+  d.id = 0;
+  d.family = "tag36h11";
+  for (int k = 0; k < 4; ++k) d.corners[k] = ra::applyHomography(h, board.tags.at(0)[k]);
+  const ra::RoiResult roi = ra::boardRoi(board, {d}, "strip");
+  ASSERT_TRUE(roi.ok());
+  for (std::size_t k = 0; k < 4; ++k) {
+    const glm::dvec2 expected = ra::applyHomography(h, board.roi("strip").paths[0][k]);
+    EXPECT_NEAR(roi.value()[0][k].x, expected.x, 1e-6);
+    EXPECT_NEAR(roi.value()[0][k].y, expected.y, 1e-6);
+  }
+  // A detection of another family is not a board tag.
+  d.family = "tag25h9";
+  EXPECT_FALSE(ra::boardRoi(board, {d}).ok());
+}
+
+TEST(Projective, FitBoardRansacRejectsAnOutlierTag) {
+  ra::Board board;
+  for (int id = 0; id < 4; ++id) {
+    const glm::dvec2 c{50.0 + 100 * id, 50.0 + 30 * (id % 2)};
+    for (int k = 0; k < 4; ++k) {
+      static const double kOffsets[4][2] = {{-1, 1}, {1, 1}, {1, -1}, {-1, -1}};
+      board.tags[id][k] = c + 20.0 * glm::dvec2{kOffsets[k][0], kOffsets[k][1]};
+    }
+  }
+  board.rois.push_back({"box", {{{0, 0}, {400, 0}, {400, 150}, {0, 150}}}});
+  const glm::dmat3 h(1.2, 0.1, 0.0003, -0.05, 1.3, 0.0001, 20, 30, 1);
+  std::vector<ra::Detection> detections;
+  for (const auto& [id, corners] : board.tags) {
+    ra::Detection d;
+    d.id = id;
+    d.family = board.family;
+    for (int k = 0; k < 4; ++k) d.corners[k] = ra::applyHomography(h, corners[k]);
+    detections.push_back(d);
+  }
+  for (glm::dvec2& c : detections[2].corners) c += glm::dvec2{40, -25};  // a misplaced tag
+  const ra::TagResult<ra::BoardFit> fit = ra::fitBoard(board, detections);
+  ASSERT_TRUE(fit.ok());
+  EXPECT_EQ(fit.value().inliers, 12);
+  EXPECT_LT(fit.value().rmsError, 1e-3);  // findHomography works in float
+  const ra::RoiResult roi = ra::boardRoi(board, detections, "box");
+  for (std::size_t k = 0; k < 4; ++k) {
+    const glm::dvec2 expected = ra::applyHomography(h, board.roi("box").paths[0][k]);
+    EXPECT_NEAR(roi.value()[0][k].x, expected.x, 1e-3);
+    EXPECT_NEAR(roi.value()[0][k].y, expected.y, 1e-3);
+  }
+}
+
+TEST(TagAnchor, Parses) {
+  EXPECT_EQ(ra::parseTagAnchor("centre"), ra::TagAnchor::Centre);
+  EXPECT_EQ(ra::parseTagAnchor("Center"), ra::TagAnchor::Centre);
+  EXPECT_EQ(ra::parseTagAnchor("top_left"), ra::TagAnchor::TopLeft);
+  EXPECT_EQ(ra::parseTagAnchor("bottom-right"), ra::TagAnchor::BottomRight);
+  expectInvalid([] { (void)ra::parseTagAnchor("middle"); }, {"middle"});
+}
+
+TEST(TagPolygon, RejectsBadIdLists) {
+  expectInvalid([] { (void)ra::polygonThroughTags({}, {1, 2}); }, {"at least 3"});
+  expectInvalid([] { (void)ra::polygonThroughTags({}, {1, 2, 1}); }, {"twice"});
+}
+
+}  // namespace
