@@ -1,6 +1,7 @@
 // Vector-vs-raster proof: clip results rasterised exactly must match the raster route (our
 // rasteriser and OpenCV's fillPoly) off a thin band around the operands' edges.
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <random>
 #include <sstream>
@@ -8,6 +9,7 @@
 #include <vector>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
@@ -218,10 +220,44 @@ TEST(SyntheticScene, ApproxPolyDpVariantsSelfIntersect) {
   EXPECT_GT(crossings, 10);
 }
 
-/// Images in images/ (written by the scene generator; may not exist yet) plus large synthetic
-/// scenes, so the test checks real content either way.
-std::vector<std::pair<std::string, cv::Mat>> sceneImages() {
-  std::vector<std::pair<std::string, cv::Mat>> out;
+/// A binary image to check, with ROIs of its own (from its JSON description) if any.
+struct SceneImage {
+  std::string name;
+  cv::Mat mask;
+  std::vector<testing::NamedRoi> rois;
+};
+
+/// ROIs listed in the scene generator's JSON ("rois": [{"name", "paths"}]) and the quad through
+/// the tag centres ("tags": [{"centre"}]), as the AprilTag layer would build it.
+std::vector<testing::NamedRoi> roisFromJson(const std::filesystem::path& file) {
+  std::vector<testing::NamedRoi> rois;
+  std::ifstream in(file);
+  if (!in) return rois;
+  const nlohmann::json j = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
+  if (j.is_discarded()) return rois;
+  for (const auto& roi : j.value("rois", nlohmann::json::array())) {
+    testing::NamedRoi named{"json:" + roi.value("name", std::string("?")), {}};
+    for (const auto& path : roi.at("paths")) {
+      named.paths.emplace_back();
+      for (const auto& p : path)
+        named.paths.back().push_back({p.at(0).get<double>(), p.at(1).get<double>()});
+    }
+    rois.push_back(named);
+  }
+  Path centres;
+  for (const auto& tag : j.value("tags", nlohmann::json::array())) {
+    if (tag.contains("centre"))
+      centres.push_back({tag["centre"][0].get<double>(), tag["centre"][1].get<double>()});
+  }
+  if (centres.size() >= 3) rois.push_back({"tag-centres", {centres}});
+  return rois;
+}
+
+/// Images in images/ (written by the scene generator; there may be none yet), thresholded both
+/// ways (dark shapes as foreground, and the bright board with the shapes as holes), plus large
+/// synthetic scenes so that the test checks real content either way.
+std::vector<SceneImage> sceneImages() {
+  std::vector<SceneImage> out;
   std::error_code ec;
   std::vector<std::filesystem::path> files;
   for (const auto& entry : std::filesystem::directory_iterator(ROICLIP_IMAGES, ec)) {
@@ -231,35 +267,53 @@ std::vector<std::pair<std::string, cv::Mat>> sceneImages() {
     }
   }
   std::sort(files.begin(), files.end());
-  for (std::size_t i = 0; i < files.size() && i < 4; ++i) {  // keep the suite fast
-    cv::Mat gray = cv::imread(files[i].string(), cv::IMREAD_GRAYSCALE);
-    if (gray.empty()) continue;
-    if (gray.cols > 800) cv::resize(gray, gray, {}, 800.0 / gray.cols, 800.0 / gray.cols);
-    cv::Mat mask;
-    cv::threshold(gray, mask, 0, 255, cv::THRESH_BINARY | cv::THRESH_OTSU);
-    out.emplace_back(files[i].filename().string(), mask);
+  for (std::size_t i = 0; i < files.size() && i < 8; ++i) {  // keep the suite fast
+    const cv::Mat gray = cv::imread(files[i].string(), cv::IMREAD_GRAYSCALE);
+    if (gray.empty() || gray.cols > 2000) continue;
+    std::filesystem::path json = files[i];
+    json.replace_extension(".json");
+    const std::vector<testing::NamedRoi> rois = roisFromJson(json);
+    for (int polarity : {cv::THRESH_BINARY_INV, cv::THRESH_BINARY}) {
+      cv::Mat mask;
+      cv::threshold(gray, mask, 0, 255, polarity | cv::THRESH_OTSU);
+      out.push_back(
+          {files[i].filename().string() + (polarity == cv::THRESH_BINARY ? " (bright)" : " (dark)"),
+           mask, rois});
+    }
   }
-  out.emplace_back("synthetic blobs 640x480", drawScene(SceneKind::Blobs, {640, 480}, 11));
-  out.emplace_back("synthetic text 640x480", drawScene(SceneKind::Text, {640, 480}, 12));
+  out.push_back({"synthetic blobs 640x480", drawScene(SceneKind::Blobs, {640, 480}, 11), {}});
+  out.push_back({"synthetic text 640x480", drawScene(SceneKind::Text, {640, 480}, 12), {}});
   return out;
 }
 
 TEST(SceneImages, ClipMatchesRasterMasksOffBand) {
-  for (const auto& [name, mask] : sceneImages()) {
+  int images = 0;
+  for (const SceneImage& image : sceneImages()) {
     Summary summary;
-    const Contoured c = findAll(mask);
+    const Contoured c = findAll(image.mask);
     const Paths subject = fromContours(c.contours, c.hierarchy);
-    for (const auto& roi : makeRois(mask.size())) {
-      for (FillRule rule : kRules) {
-        const MaskCheck check = checkRoiClip(subject, roi.paths, rule, rule, mask.size());
-        summary.add(check);
-        EXPECT_TRUE(check.ok()) << name << " roi " << roi.name << " rule " << toString(rule) << ": "
-                                << check.vectorVsRaster << " / OpenCV: "
-                                << (check.vectorVsOpenCv ? check.vectorVsOpenCv->iou : -1.0);
+    std::vector<std::vector<cv::Point>> approx(c.contours.size());
+    for (std::size_t i = 0; i < approx.size(); ++i) {
+      cv::approxPolyDP(c.contours[i], approx[i], 3.0, true);
+    }
+    std::vector<testing::NamedRoi> rois = makeRois(image.mask.size());
+    rois.insert(rois.end(), image.rois.begin(), image.rois.end());
+    for (const Paths& s : {subject, fromContours(approx)}) {
+      for (const auto& roi : rois) {
+        for (FillRule rule : kRules) {
+          const MaskCheck check = checkRoiClip(s, roi.paths, rule, rule, image.mask.size());
+          summary.add(check);
+          EXPECT_TRUE(check.ok()) << image.name << " roi " << roi.name << " rule " << toString(rule)
+                                  << ": " << check.vectorVsRaster << " / OpenCV: "
+                                  << (check.vectorVsOpenCv ? check.vectorVsOpenCv->iou : -1.0);
+        }
       }
     }
-    report(name, summary);
+    report(image.name + " (" + std::to_string(rois.size()) + " ROIs)", summary);
+    EXPECT_GT(summary.clippedPixels, 0) << image.name;
+    ++images;
   }
+  EXPECT_GE(images, 2);
 }
 
 TEST(RoundTrip, FindContoursToContoursFillPolyReproducesMask) {
