@@ -88,6 +88,15 @@ int main(int argc, char** argv) {
       ->check(fillRuleValidator())
       ->capture_default_str();
   simplifyCmd->add_option("-o,--output", simplifyOutput, "output GeoJSON file (default: stdout)");
+  roiclip::Grid grid;
+  const auto addGridScale = [&grid](CLI::App* cmd) {
+    cmd->add_option("--grid-scale", grid.scale,
+                    "grid units per coordinate unit (a power of two; |coordinate * scale| must "
+                    "stay <= 2^30)")
+        ->check(CLI::PositiveNumber)
+        ->capture_default_str();
+  };
+  addGridScale(simplifyCmd);
 
   std::string subjectFile;
   std::string clipFile;
@@ -108,6 +117,7 @@ int main(int argc, char** argv) {
   clipCmd->add_option("--clip-fill-rule", clipRule, "fill rule for CLIP (overrides)")
       ->check(fillRuleValidator());
   clipCmd->add_option("-o,--output", clipOutput, "output GeoJSON file (default: stdout)");
+  addGridScale(clipCmd);
 
   try {
     app.parse(argc, argv);
@@ -124,7 +134,7 @@ int main(int argc, char** argv) {
     if (simplifyCmd->parsed()) {
       const roiclip::Paths paths = roiclip::io::readPaths(simplifyInput);
       const roiclip::FillRule rule = roiclip::parseFillRule(simplifyRule.c_str());
-      writeResult(roiclip::io::simplifyInput(paths, simplifyInput, rule), simplifyOutput);
+      writeResult(roiclip::io::simplifyInput(paths, simplifyInput, rule, grid), simplifyOutput);
     } else if (clipCmd->parsed()) {
       const std::string base = bothRule.empty() ? "evenodd" : bothRule;
       const roiclip::FillRule sRule =
@@ -134,9 +144,9 @@ int main(int argc, char** argv) {
       const roiclip::ClipOp op = roiclip::parseClipOp(opName.c_str());
       const roiclip::Paths subject = roiclip::io::readPaths(subjectFile);
       const roiclip::Paths clipPaths = roiclip::io::readPaths(clipFile);
-      writeResult(
-          roiclip::io::clipInputs(op, subject, subjectFile, clipPaths, clipFile, sRule, cRule),
-          clipOutput);
+      writeResult(roiclip::io::clipInputs(op, subject, subjectFile, clipPaths, clipFile, sRule,
+                                          cRule, grid),
+                  clipOutput);
     }
   } catch (const roiclip::InvalidInputError& e) {
     std::cerr << "roiclip: error: " << e.what() << "\n";
