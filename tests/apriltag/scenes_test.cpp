@@ -25,6 +25,7 @@ namespace {
 const std::string kImages = ROICLIP_IMAGES;
 
 struct Truth {
+  std::vector<Paths> shapes;                         // each read with even-odd
   std::map<int, std::array<glm::dvec2, 4>> corners;  // Corner order
   std::map<int, glm::dvec2> centres;
   std::map<std::string, Paths> rois;
@@ -52,6 +53,10 @@ Truth loadTruth(const std::string& stem) {
     const int id = tag.at("id").get<int>();
     for (int k = 0; k < 4; ++k) t.corners[id][k] = point(tag.at("corners")[k]);
     t.centres[id] = point(tag.at("centre"));
+  }
+  for (const auto& shape : j.at("shapes")) {
+    EXPECT_EQ(shape.at("fill_rule").get<std::string>(), "evenodd");
+    t.shapes.push_back(paths(shape.at("paths")));
   }
   for (const auto& roi : j.at("rois"))
     t.rois[roi.at("name").get<std::string>()] = paths(roi.at("paths"));
@@ -287,6 +292,62 @@ TEST_P(Scene, DuplicatedIdsAreAmbiguous) {
   ASSERT_FALSE(polygon.ok());
   EXPECT_EQ(polygon.missing().duplicated, std::vector<int>{copy.id});
   EXPECT_FALSE(ra::boardRoi(board_, doubled).ok());
+}
+
+// Even-odd raster of a path set, 1/256 px vertex precision, 255 inside.
+cv::Mat fillMask(cv::Size size, const Paths& region) {
+  std::vector<std::vector<cv::Point>> contours;
+  for (const Path& path : region) {
+    std::vector<cv::Point> c;
+    for (const glm::dvec2& p : path) {
+      c.emplace_back(static_cast<int>(std::lround(p.x * 256)),
+                     static_cast<int>(std::lround(p.y * 256)));
+    }
+    contours.push_back(c);
+  }
+  cv::Mat mask(size, CV_8UC1, cv::Scalar(0));
+  cv::fillPoly(mask, contours, cv::Scalar(255), cv::LINE_8, 8);
+  return mask;
+}
+
+TEST_P(Scene, ShapeGroundTruthMatchesThePixels) {
+  // The truth the batch app will be judged against: dark exactly where the shapes are.
+  const cv::Mat kernel = cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(7, 7));
+  ASSERT_EQ(truth_.shapes.size(), 9u);
+  cv::Mat all(image_.size(), CV_8UC1, cv::Scalar(0));
+  for (std::size_t i = 0; i < truth_.shapes.size(); ++i) {
+    const cv::Mat mask = fillMask(image_.size(), truth_.shapes[i]);
+    EXPECT_EQ(cv::countNonZero(mask & all), 0) << "shape " << i << " overlaps another shape";
+    all |= mask;
+    cv::Mat core;
+    cv::erode(mask, core, cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(5, 5)));
+    if (cv::countNonZero(core) > 0) {
+      EXPECT_LT(cv::mean(image_, core)[0], 110) << "shape " << i << " is not dark inside";
+    }
+  }
+  // Tags with their white margin (10/8 of the black border) must not touch any shape.
+  for (const auto& [id, c] : truth_.corners) {
+    Path margin;
+    const glm::dvec2 centre = truth_.centres.at(id);
+    for (const glm::dvec2& p : c) margin.push_back(centre + (p - centre) * 1.25);
+    EXPECT_EQ(cv::countNonZero(fillMask(image_.size(), {margin}) & all), 0) << "tag " << id;
+  }
+  // Board pixels well away from shapes and tags are bright.
+  cv::Mat board = fillMask(image_.size(), {{ra::applyHomography(truth_.imageFromBoard, {5, 5}),
+                                            ra::applyHomography(truth_.imageFromBoard, {395, 5}),
+                                            ra::applyHomography(truth_.imageFromBoard, {395, 295}),
+                                            ra::applyHomography(truth_.imageFromBoard, {5, 295})}});
+  cv::Mat near;
+  cv::dilate(all, near, kernel);
+  board.setTo(0, near);
+  for (const auto& [id, c] : truth_.corners) {
+    Path margin;
+    const glm::dvec2 centre = truth_.centres.at(id);
+    for (const glm::dvec2& p : c) margin.push_back(centre + (p - centre) * 1.4);
+    board.setTo(0, fillMask(image_.size(), {margin}));
+  }
+  cv::Mat darkOnBoard = (image_ < 150) & board;
+  EXPECT_LT(cv::countNonZero(darkOnBoard), 20) << "dark pixels where no shape is";
 }
 
 std::vector<std::string> sceneNames() {
