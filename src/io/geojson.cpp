@@ -8,6 +8,8 @@
 #include <sstream>
 #include <utility>
 
+#include <unistd.h>
+
 #include <nlohmann/json.hpp>
 
 namespace roiclip::io {
@@ -280,8 +282,9 @@ std::string toGeoJson(const PolygonSet& set, int indent) {
 
 void writeGeoJson(const PolygonSet& set, const std::string& file, int indent) {
   const std::string text = toGeoJson(set, indent);
-  // Same folder as the target so that the rename cannot cross file systems.
-  const std::string temp = file + ".tmp";
+  // Same folder as the target so that the rename cannot cross file systems; the pid keeps two
+  // concurrent writers (and any user file called *.tmp) apart.
+  const std::string temp = file + ".roiclip-tmp-" + std::to_string(::getpid());
   {
     std::ofstream out(temp, std::ios::binary | std::ios::trunc);
     if (!out) throw Error(file + ": cannot open " + temp + " for writing");

@@ -198,6 +198,25 @@ TEST_F(Cli, UsageErrors) {
   EXPECT_EQ(run("clip --op merge " + square + " " + square).exitCode, 1);
 }
 
+TEST_F(Cli, GridScale) {
+  const std::string far = "'" + kData + "out_of_range.json'";
+  // x = 5,000,000 px is outside the default grid (256 units/px) but fits at 64 units/px.
+  EXPECT_EQ(run("simplify " + far).exitCode, 2);
+  const CliRun coarse = run("simplify --grid-scale 64 " + far);
+  ASSERT_EQ(coarse.exitCode, 0) << coarse.err;
+  // Even-odd: the small triangle (area 50) lies inside the big one (area 2.5e7) but for a sliver
+  // of ~2e-10 px^2 near (10, 10), so it is cut out.
+  EXPECT_NEAR(area(coarse), 25000000.0 - 50.0, 1e-3);
+  // A 1/1024 px square vanishes on a 1/256 px grid and survives on a finer one.
+  const fs::path tiny = dir_ / "tiny.json";
+  std::ofstream(tiny) << R"({"paths": [[[0, 0], [0.0009765625, 0], [0.0009765625, 0.0009765625],
+                                         [0, 0.0009765625]]]})";
+  EXPECT_DOUBLE_EQ(area(run("simplify '" + tiny.string() + "'")), 0.0);
+  EXPECT_DOUBLE_EQ(area(run("simplify --grid-scale 1024 '" + tiny.string() + "'")),
+                   0.0009765625 * 0.0009765625);
+  EXPECT_EQ(run("clip --grid-scale -1 " + far + " " + far).exitCode, 1);
+}
+
 TEST_F(Cli, UnwritableOutput) {
   const CliRun r =
       run("simplify '" + kData + "square.geojson' -o '" + (dir_ / "no/such/x.json").string() + "'");
