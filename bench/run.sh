@@ -9,9 +9,9 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 build=${BUILD_DIR:-$root/build-bench}
 out=${OUT:-$build/roiclip_bench.json}
 if [ ! -f "$build/CMakeCache.txt" ]; then
-  cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release
+  cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release >&2
 fi
-cmake --build "$build" -j2 --target roiclip_bench
+cmake --build "$build" -j2 --target roiclip_bench >&2
 mkdir -p "$build/bench_cases"
 "$build/bench/core/roiclip_bench" --dump_dir="$build/bench_cases" \
   --benchmark_min_time="${MIN_TIME:-0.2}" --benchmark_repetitions="${REPETITIONS:-1}" \
