@@ -27,6 +27,38 @@ std::int64_t snap(double v, double scale, const char* axis, std::size_t pathInde
   return std::int64_t(units);
 }
 
+// True when b lies on the way from a to c, going straight on (exact).
+bool straightThrough(IPoint a, IPoint b, IPoint c) {
+  if (orient(a, b, c) != 0) return false;
+  return i128(b.x - a.x) * (c.x - b.x) + i128(b.y - a.y) * (c.y - b.y) > 0;
+}
+
+// Drops vertices where a closed ring goes straight on: pixel chains become a few long edges.
+// The covered region and every winding number are unchanged.
+void mergeStraightRuns(std::vector<IPoint>& ring) {
+  std::size_t kept = 0;
+  for (const IPoint q : ring) {
+    while (kept >= 2 && straightThrough(ring[kept - 2], ring[kept - 1], q)) --kept;
+    ring[kept++] = q;
+  }
+  ring.resize(kept);
+  // Across the closing vertex.
+  std::size_t begin = 0;
+  bool changed = true;
+  while (changed && ring.size() - begin >= 3) {
+    changed = false;
+    const std::size_t n = ring.size();
+    if (straightThrough(ring[n - 2], ring[n - 1], ring[begin])) {
+      ring.pop_back();
+      changed = true;
+    } else if (straightThrough(ring[n - 1], ring[begin], ring[begin + 1])) {
+      ++begin;
+      changed = true;
+    }
+  }
+  ring.erase(ring.begin(), ring.begin() + std::ptrdiff_t(begin));
+}
+
 }  // namespace
 
 void appendInputEdges(const Paths& paths, int operand, const Grid& grid,
@@ -44,6 +76,7 @@ void appendInputEdges(const Paths& paths, int operand, const Grid& grid,
       if (ring.empty() || ring.back() != q) ring.push_back(q);
     }
     while (ring.size() > 1 && ring.back() == ring.front()) ring.pop_back();
+    mergeStraightRuns(ring);
     if (ring.size() < 2) continue;  // a point encloses nothing
     for (std::size_t i = 0; i < ring.size(); ++i) {
       const IPoint s = ring[i];

@@ -74,7 +74,7 @@ inline int orient(IPoint a, IPoint b, const XPoint& c) {
 }
 
 /// Exact lexicographic comparison (x first, then y): -1, 0, +1.
-inline int compareCoord(i128 a, i128 aw, i128 b, i128 bw) {
+[[gnu::noinline]] inline int compareCoord(i128 a, i128 aw, i128 b, i128 bw) {
   if (aw == bw) return (a > b) - (a < b);
   const double da = double(a) / double(aw), db = double(b) / double(bw);
   const double bound = 1e-14 * (std::fabs(da) + std::fabs(db));
@@ -85,6 +85,10 @@ inline int compareCoord(i128 a, i128 aw, i128 b, i128 bw) {
 }
 
 inline int compare(const XPoint& a, const XPoint& b) {
+  if (a.w == 1 && b.w == 1) {  // both on the grid: the common case
+    if (a.x != b.x) return a.x < b.x ? -1 : 1;
+    return (a.y > b.y) - (a.y < b.y);
+  }
   const int cx = compareCoord(a.x, a.w, b.x, b.w);
   return cx != 0 ? cx : compareCoord(a.y, a.w, b.y, b.w);
 }

@@ -43,6 +43,8 @@ class Sweep {
  public:
   explicit Sweep(const std::vector<InputEdge>& edges) : status_(StatusLess{&active_}) {
     active_.reserve(edges.size() * 2);
+    where_.resize(edges.size());
+    inStatus_.assign(edges.size(), 0);
     initial_.reserve(edges.size() * 2);
     for (const InputEdge& e : edges) {
       Active a;
@@ -51,8 +53,8 @@ class Sweep {
       a.lineA = e.a;
       a.lineB = e.b;
       a.contribution[e.operand] = e.direction;
-      initial_.push_back({e.a, int(active_.size())});
-      initial_.push_back({e.b, -1});
+      initial_.push_back({e.a, int(active_.size()), false});
+      initial_.push_back({e.b, int(active_.size()), true});
       active_.push_back(a);
     }
     std::sort(initial_.begin(), initial_.end(),
@@ -104,6 +106,7 @@ class Sweep {
   struct InitialEvent {
     IPoint point;
     int piece;
+    bool end;  // the right end of `piece` (a hint: the piece may have been merged away)
   };
 
   bool nextPoint(XPoint& p) const {
@@ -124,8 +127,14 @@ class Sweep {
     const int vertex = int(out_.vertices.size());
     out_.vertices.push_back(p);
     starts_.clear();
+    int ending = -1;  // a piece known to end at p, if any: its status node locates p
     while (cursor_ < initial_.size() && equal(XPoint(initial_[cursor_].point), p)) {
-      if (initial_[cursor_].piece >= 0) starts_.push_back(initial_[cursor_].piece);
+      const InitialEvent& ev = initial_[cursor_];
+      if (!ev.end) {
+        starts_.push_back(ev.piece);
+      } else if (inStatus_[ev.piece] && equal(active_[ev.piece].right, p)) {
+        ending = ev.piece;
+      }
       ++cursor_;
     }
     while (!queue_.empty() && equal(queue_.top().point, p)) {
@@ -134,13 +143,25 @@ class Sweep {
     }
 
     // Every active piece through p ends here; the ones that go on are cut and re-inserted.
-    auto lo = status_.lower_bound(p);
-    auto hi = status_.upper_bound(p);
+    // The pieces through p are contiguous in the status.
+    auto passes = [&](Status::iterator it) {
+      return orient(active_[*it].lineA, active_[*it].lineB, p) == 0;
+    };
+    Status::iterator lo, hi;
+    if (ending >= 0) {
+      lo = where_[ending];
+      hi = std::next(lo);
+      while (lo != status_.begin() && passes(std::prev(lo))) --lo;
+    } else {
+      lo = status_.lower_bound(p);
+      hi = lo;
+    }
+    while (hi != status_.end() && passes(hi)) ++hi;
     const int belowPiece = lo == status_.begin() ? -1 : *std::prev(lo);
     through_.assign(lo, hi);
-    status_.erase(lo, hi);
     for (int id : through_) {
       Active& a = active_[id];
+      inStatus_[id] = 0;
       out_.pieces[a.slot].right = vertex;
       if (!equal(a.right, p)) {
         a.left = p;
@@ -149,6 +170,11 @@ class Sweep {
     }
 
     mergeCoincident(p);
+
+    // One piece in, one piece out (a chain going on through p): reuse the status node. Nothing
+    // else passes through p, so the new piece sits exactly where the old one was.
+    const bool reuse = through_.size() == 1 && starts_.size() == 1;
+    if (!reuse) status_.erase(lo, hi);
 
     // Insert bottom to top, labelling winding numbers from the piece below.
     Windings wind = belowPiece >= 0 ? windAbove(active_[belowPiece]) : Windings{};
@@ -167,7 +193,13 @@ class Sweep {
       out_.pieces.push_back(piece);
       wind = windAbove(a);
       belowSlot = a.slot;
-      status_.emplace_hint(hi, id);
+      if (reuse) {
+        const_cast<int&>(*lo) = id;  // same position in the order, see above
+        where_[id] = lo;
+      } else {
+        where_[id] = status_.emplace_hint(hi, id);
+      }
+      inStatus_[id] = 1;
     }
 
     const int abovePiece = hi == status_.end() ? -1 : *hi;
@@ -219,6 +251,16 @@ class Sweep {
     if (a < 0 || b < 0) return;
     const Active& pa = active_[a];
     const Active& pb = active_[b];
+    // Cheap exact rejection on the integer supporting segments before the rational crossing.
+    if (std::max(pa.lineA.x, pb.lineA.x) > std::min(pa.lineB.x, pb.lineB.x)) return;
+    if (std::max(std::min(pa.lineA.y, pa.lineB.y), std::min(pb.lineA.y, pb.lineB.y)) >
+        std::min(std::max(pa.lineA.y, pa.lineB.y), std::max(pb.lineA.y, pb.lineB.y))) {
+      return;
+    }
+    const int o1 = orient(pa.lineA, pa.lineB, pb.lineA), o2 = orient(pa.lineA, pa.lineB, pb.lineB);
+    if (o1 * o2 > 0 || (o1 == 0 && o2 == 0)) return;
+    const int o3 = orient(pb.lineA, pb.lineB, pa.lineA), o4 = orient(pb.lineA, pb.lineB, pa.lineB);
+    if (o3 * o4 > 0) return;
     XPoint x;
     if (!lineIntersection(pa.lineA, pa.lineB, pb.lineA, pb.lineB, x)) return;
     if (compare(x, p) <= 0) return;
@@ -234,6 +276,8 @@ class Sweep {
   std::size_t cursor_ = 0;
   std::priority_queue<Event, std::vector<Event>, EventAfter> queue_;
   Status status_;
+  std::vector<Status::iterator> where_;  // status node of each piece while inStatus_
+  std::vector<char> inStatus_;
   std::vector<int> starts_;
   std::vector<int> through_;
   Arrangement out_;
