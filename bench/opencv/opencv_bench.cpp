@@ -120,25 +120,32 @@ void rasterRoute(benchmark::State& state, const Workload& w) {
   setCounters(state, w, out);
 }
 
-void BM_Vector_FullHd(benchmark::State& s) { vectorRoute(s, fullHd()); }
-void BM_VectorPerContour_FullHd(benchmark::State& s) { vectorRoutePerContour(s, fullHd()); }
-void BM_Raster_FullHd(benchmark::State& s) { rasterRoute(s, fullHd()); }
-BENCHMARK(BM_Vector_FullHd)->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_VectorPerContour_FullHd)->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_Raster_FullHd)->Unit(benchmark::kMillisecond);
-
-void BM_Vector_Scene01(benchmark::State& s) {
-  if (sceneImage() == nullptr) return s.SkipWithError("images/scene_01.png not found");
-  vectorRoute(s, *sceneImage());
-}
-void BM_Raster_Scene01(benchmark::State& s) {
-  if (sceneImage() == nullptr) return s.SkipWithError("images/scene_01.png not found");
-  rasterRoute(s, *sceneImage());
-}
-BENCHMARK(BM_Vector_Scene01)->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_Raster_Scene01)->Unit(benchmark::kMillisecond);
-
 }  // namespace
 }  // namespace roiclip::opencv
 
-BENCHMARK_MAIN();
+int main(int argc, char** argv) {
+  using namespace roiclip::opencv;
+  benchmark::RegisterBenchmark("Vector/FullHd", [](benchmark::State& s) {
+    vectorRoute(s, fullHd());
+  })->Unit(benchmark::kMillisecond);
+  benchmark::RegisterBenchmark("VectorPerContour/FullHd", [](benchmark::State& s) {
+    vectorRoutePerContour(s, fullHd());
+  })->Unit(benchmark::kMillisecond);
+  benchmark::RegisterBenchmark("Raster/FullHd", [](benchmark::State& s) {
+    rasterRoute(s, fullHd());
+  })->Unit(benchmark::kMillisecond);
+  // images/scene_01.png is written by the scene generator; skip its rows until it exists.
+  if (sceneImage() != nullptr) {
+    benchmark::RegisterBenchmark("Vector/Scene01", [](benchmark::State& s) {
+      vectorRoute(s, *sceneImage());
+    })->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark("Raster/Scene01", [](benchmark::State& s) {
+      rasterRoute(s, *sceneImage());
+    })->Unit(benchmark::kMillisecond);
+  }
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <limits>
 #include <string>
 
@@ -39,8 +40,8 @@ void appendPoints(const cv::Mat& m, int n, std::size_t index, Path& out) {
   const T* v = m.ptr<T>();
   out.reserve(std::size_t(n));
   for (int i = 0; i < n; ++i) {
-    const double x = double(v[2 * i]);
-    const double y = double(v[2 * i + 1]);
+    const double x = double(v[2 * std::ptrdiff_t(i)]);
+    const double y = double(v[2 * std::ptrdiff_t(i) + 1]);
     if (!std::isfinite(x) || !std::isfinite(y)) {
       throw InvalidInputError(contourName(index) + ", point " + std::to_string(i) + ": " +
                               (std::isfinite(x) ? "y" : "x") + " is not a finite number");
