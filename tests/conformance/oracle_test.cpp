@@ -1,0 +1,51 @@
+// The oracle judges both engines, so it is tested on its own: exactness where doubles fail, and
+// winding numbers with both orientations.
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "oracle.hpp"
+
+namespace roiclip::conformance {
+namespace {
+
+TEST(Oracle, OrientationIsExactWhereDoublesRoundToZero) {
+  const Point a(12, 12), b(24, 24);
+  // p is one ulp right of the diagonal y = x; (p.x - a.x) rounds to -11.5 in double, so the
+  // naive determinant is 0 and only the exact fallback sees the side.
+  const Point right(std::nextafter(0.5, 1.0), 0.5);
+  const Point left(0.5, std::nextafter(0.5, 1.0));
+  EXPECT_EQ((b.x - a.x) * (right.y - a.y) - (b.y - a.y) * (right.x - a.x), 0.0);
+  EXPECT_EQ(orientation(a, b, right), -1);
+  EXPECT_EQ(orientation(a, b, left), 1);
+  EXPECT_EQ(orientation(a, b, Point(0.5, 0.5)), 0);
+  EXPECT_EQ(orientation(a, b, Point(-1e300, -1e300)), 0);
+  EXPECT_EQ(orientation(Point(0, 0), Point(1, 0), Point(0.5, 1e-300)), 1);
+}
+
+TEST(Oracle, WindingNumberFollowsOrientation) {
+  const Path square = {{0, 0}, {4, 0}, {4, 4}, {0, 4}};  // shoelace > 0: winds +1
+  const Path reversed = {{0, 4}, {4, 4}, {4, 0}, {0, 0}};
+  EXPECT_EQ(windingNumber(square, Point(1, 1)), 1);
+  EXPECT_EQ(windingNumber(reversed, Point(1, 1)), -1);
+  EXPECT_EQ(windingNumber(square, Point(5, 1)), 0);
+  EXPECT_EQ(windingNumber(Paths{square, square}, Point(3.5, 0.25)), 2);
+  // A bow-tie: its two lobes wind in opposite directions.
+  const Path bowtie = {{0, 0}, {10, 10}, {10, 0}, {0, 10}};
+  EXPECT_EQ(windingNumber(bowtie, Point(1, 5)) + windingNumber(bowtie, Point(9, 5)), 0);
+  EXPECT_NE(windingNumber(bowtie, Point(1, 5)), 0);
+  EXPECT_EQ(windingNumber(bowtie, Point(5, 1)), 0);
+}
+
+TEST(Oracle, ProximityFindsOnlyNearbyEdges) {
+  const Paths rings = {{{0, 0}, {100, 0}, {100, 100}, {0, 100}}};
+  const SegmentProximity near(rings, 0.5);
+  EXPECT_TRUE(near.near(Point(50, 0.4)));
+  EXPECT_TRUE(near.near(Point(100.3, 70)));
+  EXPECT_FALSE(near.near(Point(50, 0.6)));
+  EXPECT_FALSE(near.near(Point(50, 50)));
+  EXPECT_FALSE(near.near(Point(-3, -3)));
+}
+
+}  // namespace
+}  // namespace roiclip::conformance
