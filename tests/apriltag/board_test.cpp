@@ -183,4 +183,61 @@ TEST(TagPolygon, RejectsBadIdLists) {
   expectInvalid([] { (void)ra::polygonThroughTags({}, {1, 2, 1}); }, {"twice"});
 }
 
+TEST(RoiSpec, ParsesEveryKind) {
+  const ra::RoiSpec tags = ra::parseRoiSpec("tags:0,2,1,3");
+  EXPECT_EQ(tags.kind, ra::RoiSpec::Kind::Tags);
+  EXPECT_EQ(tags.ids, (std::vector<int>{0, 2, 1, 3}));
+  EXPECT_EQ(tags.anchor, ra::TagAnchor::Centre);
+  EXPECT_EQ(ra::parseRoiSpec("tags:4,5,6@top-left").anchor, ra::TagAnchor::TopLeft);
+  const ra::RoiSpec hull = ra::parseRoiSpec("hull");
+  EXPECT_EQ(hull.kind, ra::RoiSpec::Kind::Hull);
+  EXPECT_TRUE(hull.ids.empty());
+  EXPECT_EQ(ra::parseRoiSpec("hull:7,9").ids, (std::vector<int>{7, 9}));
+  const ra::RoiSpec board = ra::parseRoiSpec("board:inspection");
+  EXPECT_EQ(board.kind, ra::RoiSpec::Kind::Board);
+  EXPECT_EQ(board.roiName, "inspection");
+  EXPECT_EQ(ra::parseRoiSpec("board").roiName, "");
+  const ra::RoiSpec tag = ra::parseRoiSpec("tag:5:0.5,-0.5;2.5,-0.5;2.5,0.5|0,0;1,0;1,1");
+  EXPECT_EQ(tag.kind, ra::RoiSpec::Kind::TagFrame);
+  EXPECT_EQ(tag.ids, std::vector<int>{5});
+  ASSERT_EQ(tag.tagFramePaths.size(), 2u);
+  EXPECT_EQ(tag.tagFramePaths[0][1], glm::dvec2(2.5, -0.5));
+  EXPECT_EQ(tag.tagFramePaths[1].size(), 3u);
+}
+
+TEST(RoiSpec, RejectsBadText) {
+  expectInvalid([] { (void)ra::parseRoiSpec("tags:0,1"); }, {"tags:0,1", "at least 3"});
+  expectInvalid([] { (void)ra::parseRoiSpec("tags:0,x,2"); }, {"'x' is not a tag id"});
+  expectInvalid([] { (void)ra::parseRoiSpec("tags:0,1,2@middle"); }, {"middle"});
+  expectInvalid([] { (void)ra::parseRoiSpec("tags"); }, {"expected tags:"});
+  expectInvalid([] { (void)ra::parseRoiSpec("hull:1,,2"); }, {"'' is not a tag id"});
+  expectInvalid([] { (void)ra::parseRoiSpec("tag:5:0,0;1,0"); }, {"at least 3"});
+  expectInvalid([] { (void)ra::parseRoiSpec("tag:5:0,0;1;1,1"); }, {"'1' is not x,y"});
+  expectInvalid([] { (void)ra::parseRoiSpec("tag:5"); }, {"expected tag:ID:"});
+  expectInvalid([] { (void)ra::parseRoiSpec("circle:3"); }, {"unknown kind 'circle'"});
+  expectInvalid([] { (void)ra::buildRoi(ra::parseRoiSpec("board"), {}); }, {"board file"});
+}
+
+TEST(RoiSpec, BuildsTheSameAsTheBuilders) {
+  std::vector<ra::Detection> detections;
+  for (int id = 0; id < 3; ++id) {
+    ra::Detection d;
+    d.id = id;
+    d.family = "tag36h11";
+    d.centre = {100.0 * id, 50.0 * (id % 2)};
+    for (int k = 0; k < 4; ++k)
+      d.corners[k] = d.centre + glm::dvec2{k % 2 ? 5 : -5, k < 2 ? 5 : -5};
+    d.homography = glm::dmat3(10, 0, 0, 0, 10, 0, d.centre.x, d.centre.y, 1);
+    detections.push_back(d);
+  }
+  EXPECT_EQ(ra::buildRoi(ra::parseRoiSpec("tags:2,0,1"), detections).value(),
+            ra::polygonThroughTags(detections, {2, 0, 1}).value());
+  EXPECT_EQ(ra::buildRoi(ra::parseRoiSpec("hull"), detections).value(),
+            ra::convexHullOfTags(detections).value());
+  const roiclip::Paths square = {{{0, 0}, {1, 0}, {1, 1}, {0, 1}}};
+  EXPECT_EQ(ra::buildRoi(ra::parseRoiSpec("tag:1:0,0;1,0;1,1;0,1"), detections).value(),
+            ra::tagFrameRoi(detections, 1, square).value());
+  EXPECT_FALSE(ra::buildRoi(ra::parseRoiSpec("tags:0,1,7"), detections).ok());
+}
+
 }  // namespace

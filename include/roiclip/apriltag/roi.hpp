@@ -146,4 +146,28 @@ TagResult<BoardFit> fitBoard(const Board& board, const std::vector<Detection>& d
 RoiResult boardRoi(const Board& board, const std::vector<Detection>& detections,
                    const std::string& roiName = {}, double ransacThreshold = 2.0);
 
+/// A parsed ROI description, as a command line gives it (`--roi tags:0,1,2,3`).
+struct RoiSpec {
+  enum class Kind { Tags, Hull, Board, TagFrame };
+  Kind kind = Kind::Tags;
+  std::vector<int> ids;  ///< Tags: the order; Hull: the set (empty = all); TagFrame: 1
+  TagAnchor anchor = TagAnchor::Centre;  ///< Tags only
+  std::string roiName;                   ///< Board only (empty = all of the board's ROIs)
+  Paths tagFramePaths;                   ///< TagFrame only
+};
+
+/// Parse one of
+///   `tags:0,1,2,3`  `tags:0,1,2,3@top-left`       polygonThroughTags (anchor default centre)
+///   `hull`  `hull:0,2,5`                          convexHullOfTags
+///   `board`  `board:inspection`                   boardRoi (the board file is given separately)
+///   `tag:5:0.5,-0.5;2.5,-0.5;2.5,0.5;0.5,0.5`     tagFrameRoi; vertices `x,y` separated by `;`,
+///                                                 several paths separated by `|`
+/// @throws InvalidInputError quoting the text and saying what is wrong.
+RoiSpec parseRoiSpec(const std::string& text);
+
+/// Build the ROI a spec describes from one image's detections.
+/// @param board required for RoiSpec::Kind::Board (InvalidInputError when null).
+RoiResult buildRoi(const RoiSpec& spec, const std::vector<Detection>& detections,
+                   const Board* board = nullptr);
+
 }  // namespace roiclip::apriltag
