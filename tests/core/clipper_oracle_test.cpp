@@ -121,6 +121,13 @@ TEST(ClipperOracle, SimplifyAreasAgree) {
             {&input}, [&](const std::vector<long long>& w) { return isFilled(rule, w[0]); });
         ASSERT_NEAR(ours, truth, 1e-6 * (truth + 1))
             << toString(rule) << " input " << testing::describe(input);
+        if (clipperWrong < 3 && std::getenv("ROICLIP_FIXTURE_OUT") != nullptr) {
+          testing::saveFixture(testing::fixtureDir() + "/clipper1_wrong_simplify_" +
+                                   std::to_string(clipperWrong) + ".json",
+                               "Clipper 1 SimplifyPolygons area is off by more than its rounding; "
+                               "slab integration agrees with roiclip",
+                               input, nullptr, "simplify", rule, rule);
+        }
         ++clipperWrong;
       } else {
         ++agreed;
@@ -160,6 +167,13 @@ TEST(ClipperOracle, ClipAreasAgree) {
             ASSERT_NEAR(ours, truth, 1e-6 * (truth + 1))
                 << toString(op) << " " << toString(ra) << "/" << toString(rb) << " A "
                 << testing::describe(a) << " B " << testing::describe(b);
+            if (clipperWrong < 3 && std::getenv("ROICLIP_FIXTURE_OUT") != nullptr) {
+              testing::saveFixture(testing::fixtureDir() + "/clipper1_wrong_clip_" +
+                                       std::to_string(clipperWrong) + ".json",
+                                   "Clipper 1 Execute area is off by more than its rounding; "
+                                   "slab integration agrees with roiclip",
+                                   a, &b, toString(op), ra, rb);
+            }
             ++clipperWrong;
           } else {
             ++agreed;

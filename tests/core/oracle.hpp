@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
+#include <fstream>
 #include <optional>
 #include <random>
 #include <sstream>
@@ -331,6 +333,25 @@ inline std::string describe(const Paths& paths) {
   }
   out << "]";
   return out.str();
+}
+
+/// Writes a case as a fixture file in the format tests/core/fixture_test.cpp replays:
+/// {"note": ..., "subject": paths, "clip": paths (optional), "op": ..., "subjectFillRule": ...,
+///  "clipFillRule": ...}.
+inline void saveFixture(const std::string& file, const std::string& note, const Paths& subject,
+                        const Paths* clipPaths, const char* op, FillRule subjectRule,
+                        FillRule clipRule) {
+  std::ofstream f(file);
+  f << "{\"note\": \"" << note << "\",\n \"subject\": " << describe(subject);
+  if (clipPaths != nullptr) f << ",\n \"clip\": " << describe(*clipPaths);
+  f << ",\n \"op\": \"" << op << "\", \"subjectFillRule\": \"" << toString(subjectRule)
+    << "\", \"clipFillRule\": \"" << toString(clipRule) << "\"}\n";
+}
+
+/// Folder for new failure fixtures: $ROICLIP_FIXTURE_OUT if set, else tests/data/core.
+inline std::string fixtureDir() {
+  const char* env = std::getenv("ROICLIP_FIXTURE_OUT");
+  return env != nullptr ? std::string(env) : std::string(ROICLIP_TEST_DATA) + "/core";
 }
 
 }  // namespace roiclip::testing

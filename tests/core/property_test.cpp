@@ -35,16 +35,6 @@ bool combine(ClipOp op, bool s, bool c) {
   return false;
 }
 
-// Writes a failing case as a fixture so it can be replayed (tests/data/core/*.json).
-void saveFailure(const std::string& name, const Paths& subject, const Paths* clipPaths,
-                 const std::string& what) {
-  const std::string path = std::string(ROICLIP_TEST_DATA) + "/core/new_failure_" + name + ".json";
-  std::ofstream f(path);
-  f << "{\"what\": \"" << what << "\", \"subject\": " << describe(subject);
-  if (clipPaths) f << ", \"clip\": " << describe(*clipPaths);
-  f << "}\n";
-}
-
 // Kinds of random input, all inside [0, 20]^2:
 // 0 random vertices; 1 grid walk with step 2 (collinear runs, touching, overlapping edges);
 // 2 several random paths; 3 unit-step walk on a 6x6 grid (almost everything degenerate);
@@ -95,8 +85,9 @@ TEST_P(SimplifyProperty, MatchesWindingOracle) {
           result, {&input}, [&](const std::vector<long long>& w) { return isFilled(rule, w[0]); },
           -1.0, 21.0, 150, 99u + unsigned(iter));
       if (!problems.empty() || report.mismatches != 0) {
-        saveFailure("simplify_" + std::to_string(kind) + "_" + std::to_string(iter), input, nullptr,
-                    toString(rule));
+        testing::saveFixture(testing::fixtureDir() + "/new_failure_simplify_" +
+                                 std::to_string(kind) + "_" + std::to_string(iter) + ".json",
+                             "property test failure", input, nullptr, "simplify", rule, rule);
       }
       EXPECT_GT(report.checked, 75);
       const double truth = testing::slabArea(
@@ -138,8 +129,9 @@ TEST_P(ClipProperty, MatchesWindingOracleAndAreaIdentities) {
               },
               -1.0, 21.0, 60, 5u + unsigned(iter));
           if (!problems.empty() || report.mismatches != 0) {
-            saveFailure("clip_" + std::to_string(kind) + "_" + std::to_string(iter), a, &b,
-                        std::string(toString(op)) + " " + toString(ra) + " " + toString(rb));
+            testing::saveFixture(testing::fixtureDir() + "/new_failure_clip_" +
+                                     std::to_string(kind) + "_" + std::to_string(iter) + ".json",
+                                 "property test failure", a, &b, toString(op), ra, rb);
           }
           EXPECT_GT(report.checked, 30);
           ASSERT_EQ(problems, "") << toString(op) << " " << toString(ra) << "/" << toString(rb)
