@@ -6,11 +6,12 @@
 //     points away from every input edge): our result must agree at every sample;
 //  2. against the suite's expected result: equal area within the tolerance that snapping to the
 //     grid implies, and equal polygon and ring counts.
-// Cases whose expectation the oracle proves wrong are listed in
-// tests/data/conformance/suite_errors.txt (reasons in VERDICTS.md); for them the test asserts
-// that the oracle still rejects the expectation and accepts ours. Cases where we are wrong are
-// listed in known_failures.txt and not run; the count is printed.
+// Cases whose expectation is wrong are listed in tests/data/conformance/suite_errors.txt (evidence
+// in VERDICTS.md); for them the test asserts that we match the oracle and still differ from the
+// suite. Cases where we are wrong (core bugs) are listed in known_failures.txt and not run by
+// default; their count is printed. The summary per suite is printed at the end.
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -489,7 +490,7 @@ OracleVerdict judge(const Loaded& l, const PolygonSet& ours, double margin, std:
 struct Tally {
   int run = 0;
   int agree = 0;       // matches the suite and the oracle
-  int suiteWrong = 0;  // listed and confirmed: the oracle rejects the suite and accepts us
+  int suiteWrong = 0;  // listed in suite_errors.txt: we match the oracle, not the suite
   int failed = 0;
 };
 std::map<std::string, Tally>& tallies() {
