@@ -1,6 +1,7 @@
 // Runs the built `roiclip` command line (ROICLIP_CLI) on the files in tests/data/io and checks
 // its output, its stderr and its exit codes.
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <cstdlib>
 #include <filesystem>
@@ -35,7 +36,9 @@ class Cli : public ::testing::Test {
  protected:
   void SetUp() override {
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() / (std::string("roiclip_cli_test_") + info->name());
+    // The pid keeps concurrent runs of the suite (several builds on one machine) apart.
+    dir_ = fs::temp_directory_path() /
+           (std::string("roiclip_cli_test_") + info->name() + "_" + std::to_string(::getpid()));
     fs::remove_all(dir_);
     fs::create_directories(dir_);
   }

@@ -1,3 +1,5 @@
+#include <unistd.h>
+
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -34,7 +36,9 @@ void expectInvalid(const std::function<void()>& f, std::initializer_list<std::st
 }
 
 std::string uniqueTempDir(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("roiclip_io_test_" + name);
+  // The pid keeps concurrent runs of the suite (several builds on one machine) apart.
+  const fs::path dir =
+      fs::temp_directory_path() / ("roiclip_io_test_" + name + "_" + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir.string();
