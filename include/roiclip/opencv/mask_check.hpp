@@ -44,7 +44,7 @@ struct MaskComparison {
   }
 };
 
-/// One line: "IoU 0.9973 (only expected 12, only actual 3, both 5432); off band 1.5 px: IoU 1
+/// One line: "IoU 0.9973 (only expected 12, only actual 3, both 5432); off band 2 px: IoU 1
 /// (only expected 0, only actual 0, 118 band pixels ignored)".
 std::ostream& operator<<(std::ostream& os, const MaskComparison& c);
 
