@@ -453,3 +453,37 @@ TEST(OpenCvBand, FillPolyDiffersFromExactRasterOnlyWithinTheBand) {
 
 }  // namespace
 }  // namespace roiclip::opencv
+
+namespace roiclip::opencv {
+namespace {
+
+TEST(MaskCheck, DetectsAWrongResult) {
+  // The check is not vacuous: a result that lost one hole, or moved by a pixel, fails off the
+  // band against both raster routes.
+  const cv::Size size(120, 100);
+  const Paths subject = {{{10, 10}, {110, 10}, {110, 90}, {10, 90}},
+                         {{30, 30}, {30, 70}, {80, 70}, {80, 30}}};
+  const Paths roi = {{{20.5, 5}, {100, 20}, {95.25, 95}, {5, 80}}};
+  const MaskCheck check = checkRoiClip(subject, roi, FillRule::EvenOdd, FillRule::EvenOdd, size);
+  ASSERT_TRUE(check.ok());
+  ASSERT_EQ(check.clipped.polygons.size(), 1u);
+  ASSERT_EQ(check.clipped.polygons[0].holes.size(), 1u);
+  Paths edges = subject;
+  edges.insert(edges.end(), roi.begin(), roi.end());
+  const cv::Mat right = rasterize(check.clipped, size);
+
+  PolygonSet noHole = check.clipped;
+  noHole.polygons[0].holes.clear();
+  const MaskComparison lost = compareMasks(right, rasterize(noHole, size), kOpenCvBand, edges);
+  EXPECT_FALSE(lost.agreesOffBand()) << lost;
+  EXPECT_GT(lost.offBandOnlyActual, 1000);
+
+  PolygonSet moved = check.clipped;
+  for (Point& p : moved.polygons[0].outer) p.x += 1.0;
+  for (Point& p : moved.polygons[0].holes[0]) p.x += 1.0;
+  const MaskComparison shifted = compareMasks(right, rasterize(moved, size), kExactBand, edges);
+  EXPECT_FALSE(shifted.agreesOffBand()) << shifted;
+}
+
+}  // namespace
+}  // namespace roiclip::opencv
