@@ -26,7 +26,7 @@ void expectInvalid(Fn fn, std::initializer_list<const char*> parts) {
   }
 }
 
-TEST(Board, LoadsCornersAndTheCentreSizeShorthand) {
+TEST(AprilTagBoard, LoadsCornersAndTheCentreSizeShorthand) {
   const ra::Board board = ra::Board::load(kData + "shorthand.json");
   EXPECT_EQ(board.family, "tag36h11");
   ASSERT_EQ(board.tags.size(), 2u);
@@ -43,20 +43,20 @@ TEST(Board, LoadsCornersAndTheCentreSizeShorthand) {
   EXPECT_EQ(board.roi("strip").paths[0][2], glm::dvec2(300, 80));
 }
 
-TEST(Board, BundledBoardLoads) {
+TEST(AprilTagBoard, BundledBoardLoads) {
   const ra::Board board = ra::Board::load(std::string(ROICLIP_IMAGES) + "/board.json");
   EXPECT_EQ(board.tags.size(), 4u);
   EXPECT_NO_THROW((void)board.roi("inspection"));
   EXPECT_NO_THROW((void)board.roi("window"));
 }
 
-TEST(BoardErrors, MalformedJson) {
+TEST(AprilTagBoardErrors, MalformedJson) {
   expectInvalid([] { (void)ra::Board::load(kData + "malformed.json"); },
                 {"malformed.json", "malformed JSON"});
   expectInvalid([] { (void)ra::Board::fromJson("[1, 2]", "inline"); }, {"inline", "object"});
 }
 
-TEST(BoardErrors, UnknownTagId) {
+TEST(AprilTagBoardErrors, UnknownTagId) {
   expectInvalid([] { (void)ra::Board::load(kData + "unknown_id.json"); },
                 {"unknown_id.json", "tags[1]", "unknown tag id 587", "0..586"});
   expectInvalid(
@@ -64,12 +64,12 @@ TEST(BoardErrors, UnknownTagId) {
       {"unknown tag id -1"});
 }
 
-TEST(BoardErrors, UnknownFamily) {
+TEST(AprilTagBoardErrors, UnknownFamily) {
   expectInvalid([] { (void)ra::Board::load(kData + "unknown_family.json"); },
                 {"unknown_family.json", "tag37h12"});
 }
 
-TEST(BoardErrors, MissingFieldsAndWrongTypes) {
+TEST(AprilTagBoardErrors, MissingFieldsAndWrongTypes) {
   expectInvalid([] { (void)ra::Board::load(kData + "missing_corner.json"); },
                 {"tags[0]", "bottom_left"});
   expectInvalid([] { (void)ra::Board::fromJson(R"({"family":"tag36h11"})"); }, {"tags"});
@@ -100,7 +100,7 @@ TEST(BoardErrors, MissingFieldsAndWrongTypes) {
   expectInvalid([&] { (void)board.roi("nope"); }, {"nope", "strip", "two_rings"});
 }
 
-TEST(Projective, ApplyAndMapPaths) {
+TEST(AprilTagProjective, ApplyAndMapPaths) {
   // x' = (2x + 1) / (0.001 x + 1), y' = (3y - 2) / (0.001 x + 1); GLM is column-major.
   const glm::dmat3 h(2, 0, 0.001, 0, 3, 0, 1, -2, 1);
   const glm::dvec2 p = ra::applyHomography(h, {10, 20});
@@ -118,7 +118,7 @@ TEST(Projective, ApplyAndMapPaths) {
   EXPECT_THROW((void)ra::applyHomography(h, {-1000, 5}), roiclip::Error);
 }
 
-TEST(Projective, FitBoardFromOneSyntheticTagIsExact) {
+TEST(AprilTagProjective, FitBoardFromOneSyntheticTagIsExact) {
   ra::Board board = ra::Board::load(kData + "shorthand.json");
   // A known homography; fake a detection of tag 0 by mapping its board corners.
   const glm::dmat3 h(1.5, 0.2, 0.0004, -0.1, 1.4, 0.0002, 30, 40, 1);
@@ -138,7 +138,7 @@ TEST(Projective, FitBoardFromOneSyntheticTagIsExact) {
   EXPECT_FALSE(ra::boardRoi(board, {d}).ok());
 }
 
-TEST(Projective, FitBoardRansacRejectsAnOutlierTag) {
+TEST(AprilTagProjective, FitBoardRansacRejectsAnOutlierTag) {
   ra::Board board;
   for (int id = 0; id < 4; ++id) {
     const glm::dvec2 c{50.0 + 100 * id, 50.0 + 30 * (id % 2)};
@@ -170,7 +170,7 @@ TEST(Projective, FitBoardRansacRejectsAnOutlierTag) {
   }
 }
 
-TEST(TagAnchor, Parses) {
+TEST(AprilTagAnchor, Parses) {
   EXPECT_EQ(ra::parseTagAnchor("centre"), ra::TagAnchor::Centre);
   EXPECT_EQ(ra::parseTagAnchor("Center"), ra::TagAnchor::Centre);
   EXPECT_EQ(ra::parseTagAnchor("top_left"), ra::TagAnchor::TopLeft);
@@ -178,12 +178,12 @@ TEST(TagAnchor, Parses) {
   expectInvalid([] { (void)ra::parseTagAnchor("middle"); }, {"middle"});
 }
 
-TEST(TagPolygon, RejectsBadIdLists) {
+TEST(AprilTagPolygon, RejectsBadIdLists) {
   expectInvalid([] { (void)ra::polygonThroughTags({}, {1, 2}); }, {"at least 3"});
   expectInvalid([] { (void)ra::polygonThroughTags({}, {1, 2, 1}); }, {"twice"});
 }
 
-TEST(RoiSpec, ParsesEveryKind) {
+TEST(AprilTagRoiSpec, ParsesEveryKind) {
   const ra::RoiSpec tags = ra::parseRoiSpec("tags:0,2,1,3");
   EXPECT_EQ(tags.kind, ra::RoiSpec::Kind::Tags);
   EXPECT_EQ(tags.ids, (std::vector<int>{0, 2, 1, 3}));
@@ -205,7 +205,7 @@ TEST(RoiSpec, ParsesEveryKind) {
   EXPECT_EQ(tag.tagFramePaths[1].size(), 3u);
 }
 
-TEST(RoiSpec, RejectsBadText) {
+TEST(AprilTagRoiSpec, RejectsBadText) {
   expectInvalid([] { (void)ra::parseRoiSpec("tags:0,1"); }, {"tags:0,1", "at least 3"});
   expectInvalid([] { (void)ra::parseRoiSpec("tags:0,x,2"); }, {"'x' is not a tag id"});
   expectInvalid([] { (void)ra::parseRoiSpec("tags:0,1,2@middle"); }, {"middle"});
@@ -218,7 +218,7 @@ TEST(RoiSpec, RejectsBadText) {
   expectInvalid([] { (void)ra::buildRoi(ra::parseRoiSpec("board"), {}); }, {"board file"});
 }
 
-TEST(RoiSpec, BuildsTheSameAsTheBuilders) {
+TEST(AprilTagRoiSpec, BuildsTheSameAsTheBuilders) {
   std::vector<ra::Detection> detections;
   for (int id = 0; id < 3; ++id) {
     ra::Detection d;

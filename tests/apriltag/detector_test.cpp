@@ -62,7 +62,7 @@ Box borderBox(int ox, int oy, int total, int border) {
           ox + (offset + border) * kCell - 0.5, oy + (offset + border) * kCell - 0.5};
 }
 
-TEST(Detector, CornerOrderOfAnUprightTagIsBottomLeftBottomRightTopRightTopLeft) {
+TEST(AprilTagDetector, CornerOrderOfAnUprightTagIsBottomLeftBottomRightTopRightTopLeft) {
   int total = 0, border = 0;
   const cv::Mat image = canvasWithTag(7, 40, 30, -1, "tag36h11", &total, &border);
   const std::vector<ra::Detection> found = ra::Detector(unrefined()).detect(image);
@@ -85,7 +85,7 @@ TEST(Detector, CornerOrderOfAnUprightTagIsBottomLeftBottomRightTopRightTopLeft) 
   EXPECT_LT(shoelace, 0);
 }
 
-TEST(Detector, CornersFollowTheTagWhenItIsRotated) {
+TEST(AprilTagDetector, CornersFollowTheTagWhenItIsRotated) {
   int total = 0, border = 0;
   // Rotated 90 degrees clockwise: the tag's top-left corner is now at the top right of the box.
   const cv::Mat image =
@@ -101,7 +101,7 @@ TEST(Detector, CornersFollowTheTagWhenItIsRotated) {
   EXPECT_LT(dist(d.corner(Corner::BottomLeft), {b.left, b.top}), 0.05);
 }
 
-TEST(Detector, CoordinatesArePixelCentred) {
+TEST(AprilTagDetector, CoordinatesArePixelCentred) {
   // The black border covers pixels [x0, x1] inclusive; in OpenCV's convention its outer edge is at
   // x0 - 0.5 and its centre at (x0 + x1) / 2. libapriltag alone would report both 0.5 px larger.
   int total = 0, border = 0;
@@ -117,7 +117,7 @@ TEST(Detector, CoordinatesArePixelCentred) {
   EXPECT_NEAR(found[0].corner(Corner::TopLeft).y, y0 - 0.5, 0.05);
 }
 
-TEST(Detector, RefineEdgesBiasIsSmall) {
+TEST(AprilTagDetector, RefineEdgesBiasIsSmall) {
   // libapriltag's edge refinement (on by default) places the corners of this blurred, axis-aligned
   // tag about 0.11 px outside the true border. Measured, not a wrapper offset: a 0.5 px convention
   // error would fail this.
@@ -133,7 +133,7 @@ TEST(Detector, RefineEdgesBiasIsSmall) {
   EXPECT_GT(d.corner(Corner::BottomRight).x, b.right);
 }
 
-TEST(Detector, HomographyMapsTheTagFrame) {
+TEST(AprilTagDetector, HomographyMapsTheTagFrame) {
   const cv::Mat image = canvasWithTag(11, 60, 20, cv::ROTATE_180);
   const std::vector<ra::Detection> found = ra::Detector().detect(image);
   ASSERT_EQ(found.size(), 1u);
@@ -147,7 +147,7 @@ TEST(Detector, HomographyMapsTheTagFrame) {
   EXPECT_LT(d.tagToImage({1, 0}).x, d.centre.x);
 }
 
-TEST(Detector, LibapriltagBlursTheCallersBufferInPlace) {
+TEST(AprilTagDetector, LibapriltagBlursTheCallersBufferInPlace) {
   // The trap the wrapper guards against: with quad_sigma != 0 and no decimation, the raw library
   // writes its blur into the image it was given.
   cv::Mat image = canvasWithTag(5, 40, 40);
@@ -165,7 +165,7 @@ TEST(Detector, LibapriltagBlursTheCallersBufferInPlace) {
   EXPECT_GT(cv::norm(image, before, cv::NORM_INF), 0.0);
 }
 
-TEST(Detector, NeverModifiesTheInput) {
+TEST(AprilTagDetector, NeverModifiesTheInput) {
   for (float sigma : {0.8f, -0.8f, 0.0f}) {
     for (float decimate : {1.0f, 2.0f}) {
       cv::Mat image = canvasWithTag(5, 40, 40);
@@ -181,7 +181,7 @@ TEST(Detector, NeverModifiesTheInput) {
   }
 }
 
-TEST(Detector, RespectsTheRowStepOfAView) {
+TEST(AprilTagDetector, RespectsTheRowStepOfAView) {
   const cv::Mat big = canvasWithTag(9, 120, 100);
   const cv::Mat view = big(cv::Rect(101, 83, 180, 170));  // not continuous: step > cols
   ASSERT_FALSE(view.isContinuous());
@@ -199,7 +199,7 @@ TEST(Detector, RespectsTheRowStepOfAView) {
   EXPECT_LT(dist(fromView[0].centre + glm::dvec2{101, 83}, fromBig[0].centre), 0.05);
 }
 
-TEST(Detector, ColourInputGivesTheSameResultAsGray) {
+TEST(AprilTagDetector, ColourInputGivesTheSameResultAsGray) {
   const cv::Mat gray = canvasWithTag(21, 30, 50);
   cv::Mat bgr, bgra;
   cv::cvtColor(gray, bgr, cv::COLOR_GRAY2BGR);
@@ -213,7 +213,7 @@ TEST(Detector, ColourInputGivesTheSameResultAsGray) {
   EXPECT_EQ(a[0].corners, c[0].corners);
 }
 
-TEST(Detector, TwoDetectorsOfOneFamilyOwnTheirFamilies) {
+TEST(AprilTagDetector, TwoDetectorsOfOneFamilyOwnTheirFamilies) {
   // With a shared libapriltag family both detectors would free its decode table (double free)
   // and the second destroy would read freed memory. Each Detector owns its family, so creating,
   // using and destroying them in any order is safe.
@@ -233,7 +233,7 @@ TEST(Detector, TwoDetectorsOfOneFamilyOwnTheirFamilies) {
   }
 }
 
-TEST(Detector, ConcurrentCallsOnOneDetectorAreSerialised) {
+TEST(AprilTagDetector, ConcurrentCallsOnOneDetectorAreSerialised) {
   std::vector<cv::Mat> images;
   for (int id = 0; id < 4; ++id) images.push_back(canvasWithTag(id * 10, 20 + 8 * id, 30 + 4 * id));
   ra::DetectorOptions options;
@@ -263,7 +263,7 @@ TEST(Detector, ConcurrentCallsOnOneDetectorAreSerialised) {
   }
 }
 
-TEST(Detector, EveryFamilyRoundTrips) {
+TEST(AprilTagDetector, EveryFamilyRoundTrips) {
   for (const std::string& family : ra::availableFamilies()) {
     const int id = ra::familySize(family) / 2;
     const cv::Mat image = canvasWithTag(id, 40, 40, -1, family.c_str());
@@ -277,12 +277,12 @@ TEST(Detector, EveryFamilyRoundTrips) {
   }
 }
 
-TEST(Detector, FindsNothingInABlankImage) {
+TEST(AprilTagDetector, FindsNothingInABlankImage) {
   const cv::Mat blank(120, 160, CV_8UC1, cv::Scalar(200));
   EXPECT_TRUE(ra::Detector().detect(blank).empty());
 }
 
-TEST(DetectorErrors, EmptyImage) {
+TEST(AprilTagDetectorErrors, EmptyImage) {
   try {
     (void)ra::Detector().detect(cv::Mat());
     FAIL() << "no exception";
@@ -291,7 +291,7 @@ TEST(DetectorErrors, EmptyImage) {
   }
 }
 
-TEST(DetectorErrors, NonEightBitImages) {
+TEST(AprilTagDetectorErrors, NonEightBitImages) {
   const ra::Detector detector;
   for (int type : {CV_16UC1, CV_32FC1, CV_64FC3, CV_8SC1}) {
     const cv::Mat image(40, 40, type, cv::Scalar(0));
@@ -307,7 +307,7 @@ TEST(DetectorErrors, NonEightBitImages) {
                roiclip::InvalidInputError);
 }
 
-TEST(DetectorErrors, UnknownFamily) {
+TEST(AprilTagDetectorErrors, UnknownFamily) {
   ra::DetectorOptions options;
   options.family = "tag99h99";
   try {
@@ -320,7 +320,7 @@ TEST(DetectorErrors, UnknownFamily) {
   EXPECT_THROW(ra::renderTag("tag36h11", 100000), roiclip::InvalidInputError);
 }
 
-TEST(DetectorErrors, BadOptions) {
+TEST(AprilTagDetectorErrors, BadOptions) {
   ra::DetectorOptions decimate;
   decimate.quadDecimate = 0.5f;
   EXPECT_THROW(ra::Detector{decimate}, roiclip::InvalidInputError);
@@ -332,7 +332,7 @@ TEST(DetectorErrors, BadOptions) {
   EXPECT_THROW(ra::Detector{bits}, roiclip::InvalidInputError);
 }
 
-TEST(DetectorErrors, MovedFromDetectorThrows) {
+TEST(AprilTagDetectorErrors, MovedFromDetectorThrows) {
   ra::Detector a;
   ra::Detector b(std::move(a));
   const cv::Mat image = canvasWithTag(1, 40, 40);

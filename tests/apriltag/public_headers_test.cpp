@@ -15,7 +15,7 @@
 
 #include <gtest/gtest.h>
 
-TEST(PublicHeaders, StdMaxStillWorks) {
+TEST(AprilTagPublicHeaders, StdMaxStillWorks) {
   EXPECT_EQ(std::max(2, 3), 3);
   EXPECT_EQ((std::max)({4, 1, 7}), 7);
 }

@@ -82,7 +82,7 @@ double maxVertexError(const Paths& a, const Paths& b) {
   return worst;
 }
 
-class Scene : public ::testing::TestWithParam<std::string> {
+class AprilTagScene : public ::testing::TestWithParam<std::string> {
  protected:
   void SetUp() override {
     image_ = cv::imread(kImages + "/" + GetParam() + ".png", cv::IMREAD_GRAYSCALE);
@@ -95,13 +95,26 @@ class Scene : public ::testing::TestWithParam<std::string> {
     static const ra::Detector instance;  // thread-safe by construction; built once
     return instance;
   }
+  // One check per builder; grouped into a few tests below so that CTest (one process per test)
+  // does not pay the process and detector start-up dozens of times per scene.
+  void checkEveryTagFoundWithCornersWithinHalfAPixel();
+  void checkDecimationAndThreadsKeepTheResult();
+  void checkBoardRoiWithinOnePixel();
+  void checkBoardRoiFromOneTagUsesAnExactFit();
+  void checkPolygonThroughTagCentresAndCorners();
+  void checkOutOfOrderTagsGiveASelfIntersectingRoi();
+  void checkConvexHullOfTagCorners();
+  void checkTagFrameRoiMatchesTheBoardGeometry();
+  void checkMissingTagsAreReportedNotEmpty();
+  void checkDuplicatedIdsAreAmbiguous();
+
   cv::Mat image_;
   Truth truth_;
   ra::Board board_;
   std::vector<ra::Detection> detections_;
 };
 
-TEST_P(Scene, EveryTagFoundWithCornersWithinHalfAPixel) {
+void AprilTagScene::checkEveryTagFoundWithCornersWithinHalfAPixel() {
   std::vector<int> ids;
   for (const ra::Detection& d : detections_) ids.push_back(d.id);
   EXPECT_EQ(ids, (std::vector<int>{0, 1, 2, 3}));
@@ -120,7 +133,29 @@ TEST_P(Scene, EveryTagFoundWithCornersWithinHalfAPixel) {
   std::printf("[ %s ] max corner error %.3f px\n", GetParam().c_str(), worst);
 }
 
-TEST_P(Scene, BoardRoiWithinOnePixel) {
+void AprilTagScene::checkDecimationAndThreadsKeepTheResult() {
+  // quad_decimate 2 finds quads on a half-size image; refine_edges then snaps the edges back to
+  // full-resolution gradients. Several worker threads must not change anything.
+  ra::DetectorOptions options;
+  options.quadDecimate = 2.0f;
+  options.threads = 2;
+  const std::vector<ra::Detection> found = ra::Detector(options).detect(image_);
+  ASSERT_EQ(found.size(), 4u);
+  double worst = 0;
+  for (const ra::Detection& d : found) {
+    for (int k = 0; k < 4; ++k)
+      worst = std::max(worst, dist(d.corners[k], truth_.corners.at(d.id)[k]));
+  }
+  EXPECT_LT(worst, 0.5);
+  ra::DetectorOptions single = options;
+  single.threads = 1;
+  const std::vector<ra::Detection> serial = ra::Detector(single).detect(image_);
+  ASSERT_EQ(serial.size(), found.size());
+  for (std::size_t i = 0; i < found.size(); ++i) EXPECT_EQ(serial[i].corners, found[i].corners);
+  std::printf("[ %s ] decimate 2: max corner error %.3f px\n", GetParam().c_str(), worst);
+}
+
+void AprilTagScene::checkBoardRoiWithinOnePixel() {
   double worst = 0;
   for (const ra::BoardRoi& roi : board_.rois) {
     const ra::RoiResult result = ra::boardRoi(board_, detections_, roi.name);
@@ -142,7 +177,7 @@ TEST_P(Scene, BoardRoiWithinOnePixel) {
               worst, fit.value().rmsError);
 }
 
-TEST_P(Scene, BoardRoiFromOneTagUsesAnExactFit) {
+void AprilTagScene::checkBoardRoiFromOneTagUsesAnExactFit() {
   // Only tag 1 visible: the homography comes from its 4 corners alone (no RANSAC), so the ROI far
   // from the tag is less accurate; still a result, not a failure.
   std::vector<ra::Detection> one;
@@ -160,7 +195,7 @@ TEST_P(Scene, BoardRoiFromOneTagUsesAnExactFit) {
   std::printf("[ %s ] one-tag board ROI max vertex error %.3f px\n", GetParam().c_str(), e);
 }
 
-TEST_P(Scene, PolygonThroughTagCentresAndCorners) {
+void AprilTagScene::checkPolygonThroughTagCentresAndCorners() {
   const ra::RoiResult centres = ra::polygonThroughTags(detections_, {0, 1, 2, 3});
   ASSERT_TRUE(centres.ok());
   ASSERT_EQ(centres.value().size(), 1u);
@@ -182,7 +217,7 @@ TEST_P(Scene, PolygonThroughTagCentresAndCorners) {
   EXPECT_LT(roiclip::signedArea(path) * roiclip::signedArea(reversed.value()[0]), 0);
 }
 
-TEST_P(Scene, OutOfOrderTagsGiveASelfIntersectingRoi) {
+void AprilTagScene::checkOutOfOrderTagsGiveASelfIntersectingRoi() {
   // 0,2,1,3 crosses itself between the tags: a bow-tie. Under even-odd it is two triangles.
   const ra::RoiResult bowTie = ra::polygonThroughTags(detections_, {0, 2, 1, 3});
   ASSERT_TRUE(bowTie.ok());
@@ -194,7 +229,7 @@ TEST_P(Scene, OutOfOrderTagsGiveASelfIntersectingRoi) {
   EXPECT_LT(region.area(), quad.area());
 }
 
-TEST_P(Scene, ConvexHullOfTagCorners) {
+void AprilTagScene::checkConvexHullOfTagCorners() {
   std::vector<cv::Point2f> truthPoints;
   for (const auto& [id, corners] : truth_.corners) {
     for (const glm::dvec2& c : corners) {
@@ -235,7 +270,7 @@ TEST_P(Scene, ConvexHullOfTagCorners) {
   EXPECT_LT(-roiclip::signedArea(two.value()[0]), truthArea);
 }
 
-TEST_P(Scene, TagFrameRoiMatchesTheBoardGeometry) {
+void AprilTagScene::checkTagFrameRoiMatchesTheBoardGeometry() {
   // On the board, tag 0 is upright with its centre at (50, 50) mm and a 64 mm black border, so
   // tag-frame (u, v) is board (50 + 64 u, 50 + 64 v). The area 2 tag-widths to its right:
   const Paths tagFrame = {{{0.5, -0.5}, {2.5, -0.5}, {2.5, 0.5}, {0.5, 0.5}}};
@@ -254,7 +289,7 @@ TEST_P(Scene, TagFrameRoiMatchesTheBoardGeometry) {
   std::printf("[ %s ] tag-frame ROI max vertex error %.3f px\n", GetParam().c_str(), e);
 }
 
-TEST_P(Scene, MissingTagsAreReportedNotEmpty) {
+void AprilTagScene::checkMissingTagsAreReportedNotEmpty() {
   std::vector<ra::Detection> withoutTwo;
   for (const ra::Detection& d : detections_) {
     if (d.id != 2) withoutTwo.push_back(d);
@@ -283,7 +318,7 @@ TEST_P(Scene, MissingTagsAreReportedNotEmpty) {
   EXPECT_FALSE(ra::convexHullOfTags({}).ok());
 }
 
-TEST_P(Scene, DuplicatedIdsAreAmbiguous) {
+void AprilTagScene::checkDuplicatedIdsAreAmbiguous() {
   std::vector<ra::Detection> doubled = detections_;
   ra::Detection copy = detections_.front();
   for (glm::dvec2& c : copy.corners) c += glm::dvec2{5, 5};
@@ -310,7 +345,7 @@ cv::Mat fillMask(cv::Size size, const Paths& region) {
   return mask;
 }
 
-TEST_P(Scene, ShapeGroundTruthMatchesThePixels) {
+TEST_P(AprilTagScene, ShapeGroundTruthMatchesThePixels) {
   // The truth the batch app will be judged against: dark exactly where the shapes are.
   const cv::Mat kernel = cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(7, 7));
   ASSERT_EQ(truth_.shapes.size(), 9u);
@@ -350,6 +385,58 @@ TEST_P(Scene, ShapeGroundTruthMatchesThePixels) {
   EXPECT_LT(cv::countNonZero(darkOnBoard), 20) << "dark pixels where no shape is";
 }
 
+TEST_P(AprilTagScene, Detection) {
+  {
+    SCOPED_TRACE("EveryTagFoundWithCornersWithinHalfAPixel");
+    checkEveryTagFoundWithCornersWithinHalfAPixel();
+  }
+  {
+    SCOPED_TRACE("DecimationAndThreadsKeepTheResult");
+    checkDecimationAndThreadsKeepTheResult();
+  }
+}
+
+TEST_P(AprilTagScene, BoardRoi) {
+  {
+    SCOPED_TRACE("BoardRoiWithinOnePixel");
+    checkBoardRoiWithinOnePixel();
+  }
+  {
+    SCOPED_TRACE("BoardRoiFromOneTagUsesAnExactFit");
+    checkBoardRoiFromOneTagUsesAnExactFit();
+  }
+}
+
+TEST_P(AprilTagScene, TagBuilders) {
+  {
+    SCOPED_TRACE("PolygonThroughTagCentresAndCorners");
+    checkPolygonThroughTagCentresAndCorners();
+  }
+  {
+    SCOPED_TRACE("OutOfOrderTagsGiveASelfIntersectingRoi");
+    checkOutOfOrderTagsGiveASelfIntersectingRoi();
+  }
+  {
+    SCOPED_TRACE("ConvexHullOfTagCorners");
+    checkConvexHullOfTagCorners();
+  }
+  {
+    SCOPED_TRACE("TagFrameRoiMatchesTheBoardGeometry");
+    checkTagFrameRoiMatchesTheBoardGeometry();
+  }
+}
+
+TEST_P(AprilTagScene, Failures) {
+  {
+    SCOPED_TRACE("MissingTagsAreReportedNotEmpty");
+    checkMissingTagsAreReportedNotEmpty();
+  }
+  {
+    SCOPED_TRACE("DuplicatedIdsAreAmbiguous");
+    checkDuplicatedIdsAreAmbiguous();
+  }
+}
+
 std::vector<std::string> sceneNames() {
   std::vector<std::string> names;
   for (int i = 1; i <= 8; ++i) {
@@ -360,6 +447,6 @@ std::vector<std::string> sceneNames() {
   return names;
 }
 
-INSTANTIATE_TEST_SUITE_P(Images, Scene, ::testing::ValuesIn(sceneNames()));
+INSTANTIATE_TEST_SUITE_P(Bundled, AprilTagScene, ::testing::ValuesIn(sceneNames()));
 
 }  // namespace
