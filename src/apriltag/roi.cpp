@@ -276,7 +276,10 @@ const BoardRoi& Board::roi(const std::string& name) const {
     if (r.name == name) return r;
   }
   std::string names;
-  for (const BoardRoi& r : rois) names += (names.empty() ? "" : ", ") + r.name;
+  for (const BoardRoi& r : rois) {
+    if (!names.empty()) names += ", ";
+    names += r.name;
+  }
   throw InvalidInputError("board has no ROI named '" + name + "' (it has: " + names + ")");
 }
 

@@ -277,6 +277,31 @@ TEST(AprilTagDetector, EveryFamilyRoundTrips) {
   }
 }
 
+TEST(AprilTagDetector, RenderTagCopiesRowsWithTheirStride) {
+  // apriltag_to_image pads rows to a 96-byte stride; a stride-blind copy would shear the tag.
+  int border = 0;
+  const cv::Mat tag = ra::renderTag("tag36h11", 0, &border);
+  ASSERT_EQ(tag.type(), CV_8UC1);
+  ASSERT_EQ(tag.rows, 10);
+  ASSERT_EQ(tag.cols, 10);
+  EXPECT_EQ(border, 8);
+  for (int i = 0; i < 10; ++i) {
+    // Outer ring white, next ring black, on every row and column.
+    EXPECT_EQ(tag.at<unsigned char>(i, 0), 255) << i;
+    EXPECT_EQ(tag.at<unsigned char>(0, i), 255) << i;
+    EXPECT_EQ(tag.at<unsigned char>(i, 9), 255) << i;
+    EXPECT_EQ(tag.at<unsigned char>(9, i), 255) << i;
+    if (i >= 1 && i <= 8) {
+      EXPECT_EQ(tag.at<unsigned char>(i, 1), 0) << i;
+      EXPECT_EQ(tag.at<unsigned char>(1, i), 0) << i;
+      EXPECT_EQ(tag.at<unsigned char>(i, 8), 0) << i;
+      EXPECT_EQ(tag.at<unsigned char>(8, i), 0) << i;
+    }
+  }
+  // Different ids give different payloads.
+  EXPECT_GT(cv::norm(tag, ra::renderTag("tag36h11", 1), cv::NORM_L1), 0.0);
+}
+
 TEST(AprilTagDetector, FindsNothingInABlankImage) {
   const cv::Mat blank(120, 160, CV_8UC1, cv::Scalar(200));
   EXPECT_TRUE(ra::Detector().detect(blank).empty());
