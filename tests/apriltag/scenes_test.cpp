@@ -1,6 +1,7 @@
 // Detection and every ROI builder on the bundled scenes (images/), against their ground truth.
 #include <roiclip/apriltag/detector.hpp>
 #include <roiclip/apriltag/roi.hpp>
+#include <roiclip/opencv/rasterize.hpp>
 #include <roiclip/roiclip.hpp>
 
 #include <algorithm>
@@ -434,6 +435,49 @@ TEST_P(AprilTagScene, Failures) {
   {
     SCOPED_TRACE("DuplicatedIdsAreAmbiguous");
     checkDuplicatedIdsAreAmbiguous();
+  }
+}
+
+double perimeter(const roiclip::PolygonSet& set) {
+  double total = 0;
+  for (const Path& ring : set.toPaths()) {
+    for (std::size_t i = 0; i < ring.size(); ++i)
+      total += dist(ring[i], ring[(i + 1) % ring.size()]);
+  }
+  return total;
+}
+
+TEST_P(AprilTagScene, ClippingTheTrueShapesWithTheDetectedRoi) {
+  // End to end on the core: each true shape clipped by the board ROI built from the detected tags
+  // covers the same area as when clipped by the true ROI, and as a raster of shape AND ROI.
+  for (const ra::BoardRoi& roi : board_.rois) {
+    const Paths detected = ra::boardRoi(board_, detections_, roi.name).value();
+    const Paths& truth = truth_.rois.at(roi.name);
+    const cv::Mat roiMask =
+        roiclip::opencv::rasterize(truth, roiclip::FillRule::EvenOdd, image_.size());
+    for (std::size_t i = 0; i < truth_.shapes.size(); ++i) {
+      SCOPED_TRACE(roi.name + " shape " + std::to_string(i));
+      const Paths& shape = truth_.shapes[i];
+      const roiclip::PolygonSet a =
+          roiclip::clip(roiclip::ClipOp::Intersection, shape, detected, roiclip::FillRule::EvenOdd,
+                        roiclip::FillRule::EvenOdd);
+      const roiclip::PolygonSet b =
+          roiclip::clip(roiclip::ClipOp::Intersection, shape, truth, roiclip::FillRule::EvenOdd,
+                        roiclip::FillRule::EvenOdd);
+      // The ROIs differ by < 0.2 px along their border (BoardRoi check).
+      EXPECT_NEAR(a.area(), b.area(), 0.2 * perimeter(b) + 1e-9);
+      // Pixel-centre rasters: (shape AND roi) must equal the raster of the clipped polygons, up
+      // to centres lying within rounding distance of a crossing vertex.
+      const cv::Mat expected =
+          roiclip::opencv::rasterize(shape, roiclip::FillRule::EvenOdd, image_.size()) & roiMask;
+      const cv::Mat actual = roiclip::opencv::rasterize(b, image_.size());
+      EXPECT_LE(cv::countNonZero(expected ^ actual), 2);
+      EXPECT_NEAR(b.area(), cv::countNonZero(actual), 0.5 * perimeter(b) + 2.0);
+      for (const roiclip::Polygon& polygon : b.polygons) {
+        EXPECT_LT(roiclip::signedArea(polygon.outer), 0);
+        for (const Path& hole : polygon.holes) EXPECT_GT(roiclip::signedArea(hole), 0);
+      }
+    }
   }
 }
 
