@@ -481,6 +481,34 @@ TEST_P(AprilTagScene, ClippingTheTrueShapesWithTheDetectedRoi) {
   }
 }
 
+TEST_P(AprilTagScene, ClippingWithASelfIntersectingTagRoi) {
+  // tags:0,2,1,3 is a bow-tie through the tag centres; both fill rules must agree with a raster.
+  const Paths bowTie = ra::polygonThroughTags(detections_, {0, 2, 1, 3}).value();
+  std::map<roiclip::FillRule, double> total;
+  for (roiclip::FillRule rule : {roiclip::FillRule::EvenOdd, roiclip::FillRule::NonZero,
+                                 roiclip::FillRule::Positive, roiclip::FillRule::Negative}) {
+    const cv::Mat roiMask = roiclip::opencv::rasterize(bowTie, rule, image_.size());
+    for (std::size_t i = 0; i < truth_.shapes.size(); ++i) {
+      SCOPED_TRACE(std::string(roiclip::toString(rule)) + " shape " + std::to_string(i));
+      const roiclip::PolygonSet clipped =
+          roiclip::clip(roiclip::ClipOp::Intersection, truth_.shapes[i], bowTie,
+                        roiclip::FillRule::EvenOdd, rule);
+      const cv::Mat expected =
+          roiclip::opencv::rasterize(truth_.shapes[i], roiclip::FillRule::EvenOdd, image_.size()) &
+          roiMask;
+      EXPECT_LE(cv::countNonZero(expected ^ roiclip::opencv::rasterize(clipped, image_.size())), 2);
+      total[rule] += clipped.area();
+    }
+  }
+  // The bow-tie winds +1 in one lobe and -1 in the other.
+  using roiclip::FillRule;
+  EXPECT_GT(total[FillRule::Positive], 100.0);
+  EXPECT_GT(total[FillRule::Negative], 100.0);
+  EXPECT_NEAR(total[FillRule::Positive] + total[FillRule::Negative], total[FillRule::EvenOdd],
+              1e-6 * total[FillRule::EvenOdd]);
+  EXPECT_NEAR(total[FillRule::NonZero], total[FillRule::EvenOdd], 1e-6 * total[FillRule::EvenOdd]);
+}
+
 std::vector<std::string> sceneNames() {
   std::vector<std::string> names;
   for (int i = 1; i <= 8; ++i) {
