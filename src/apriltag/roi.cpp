@@ -90,6 +90,10 @@ const Json& field(const Json& object, const char* name, const std::string& where
 
 std::string MissingTags::describe() const {
   std::ostringstream out;
+  if (needed.empty()) {
+    out << "needed at least " << minimumNeeded << " detected tag, seen " << idList(seen);
+    return out.str();
+  }
   out << "needed ";
   if (minimumNeeded < static_cast<int>(needed.size()))
     out << "at least " << minimumNeeded << " of ";

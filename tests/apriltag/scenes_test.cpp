@@ -316,7 +316,9 @@ void AprilTagScene::checkMissingTagsAreReportedNotEmpty() {
   ASSERT_FALSE(none.ok());
   EXPECT_EQ(none.missing().minimumNeeded, 1);
   EXPECT_EQ(none.missing().missing, (std::vector<int>{0, 1, 2, 3}));
-  EXPECT_FALSE(ra::convexHullOfTags({}).ok());
+  const ra::RoiResult nothing = ra::convexHullOfTags({});
+  ASSERT_FALSE(nothing.ok());
+  EXPECT_EQ(nothing.missing().describe(), "needed at least 1 detected tag, seen []");
 }
 
 void AprilTagScene::checkDuplicatedIdsAreAmbiguous() {
