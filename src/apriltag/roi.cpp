@@ -323,9 +323,34 @@ TagResult<BoardFit> fitBoard(const Board& board, const std::vector<Detection>& d
     }
     fit.imageFromBoard = detail::homographyFrom4(from, to);
   } else {
-    const cv::Mat h =
-        cv::findHomography(boardPoints, imagePoints, mask, cv::RANSAC, ransacThreshold);
+    cv::Mat h = cv::findHomography(boardPoints, imagePoints, mask, cv::RANSAC, ransacThreshold);
     if (h.empty()) throw Error("board homography fit failed (degenerate tag corners)");
+    // RANSAC's mask comes from its best minimal (4-point) model, which extrapolates noise far
+    // across a large board and can drop good corners. Re-select the inliers with the refined
+    // model and refit them by least squares until the set is stable.
+    for (int round = 0; round < 5; ++round) {
+      const glm::dmat3 g = detail::toGlm(cv::Matx33d(h));
+      cv::Mat inliers(static_cast<int>(boardPoints.size()), 1, CV_8U);
+      std::vector<cv::Point2d> from;
+      std::vector<cv::Point2d> to;
+      for (std::size_t i = 0; i < boardPoints.size(); ++i) {
+        const glm::dvec2 p = applyHomography(g, {boardPoints[i].x, boardPoints[i].y});
+        const bool in =
+            std::hypot(p.x - imagePoints[i].x, p.y - imagePoints[i].y) <= ransacThreshold;
+        inliers.at<unsigned char>(static_cast<int>(i)) = in ? 1 : 0;
+        if (in) {
+          from.push_back(boardPoints[i]);
+          to.push_back(imagePoints[i]);
+        }
+      }
+      const bool stable = cv::countNonZero(inliers != mask) == 0;
+      mask = inliers;
+      if (from.size() < 4) break;
+      const cv::Mat refit = cv::findHomography(from, to, 0);
+      if (refit.empty()) break;
+      h = refit;
+      if (stable) break;
+    }
     fit.imageFromBoard = detail::toGlm(cv::Matx33d(h));
   }
   double sum = 0;

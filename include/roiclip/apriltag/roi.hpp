@@ -135,8 +135,9 @@ struct BoardFit {
 };
 
 /// Fit image-from-board to the corners of every detected board tag (detections of other
-/// families or ids are ignored): an exact fit for one tag, RANSAC (then least squares on the
-/// inliers) for more. `ransacThreshold` is the inlier distance in pixels.
+/// families or ids are ignored): an exact fit for one tag; for more, RANSAC, then least squares
+/// on the corners within `ransacThreshold` pixels of the refined model, repeated until that
+/// inlier set is stable.
 /// @return fails when no board tag (or a board tag more than once) was detected.
 TagResult<BoardFit> fitBoard(const Board& board, const std::vector<Detection>& detections,
                              double ransacThreshold = 2.0);
