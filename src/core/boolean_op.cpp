@@ -6,35 +6,65 @@
 #include "pipeline.hpp"
 
 namespace roiclip {
+namespace detail {
 namespace {
 
-PolygonSet run(const Paths& subject, const Paths* clipPaths, const detail::Combination& how,
-               const Grid& grid) {
-  std::vector<detail::InputEdge> edges;
-  detail::appendInputEdges(subject, 0, grid, edges);
-  if (clipPaths != nullptr) detail::appendInputEdges(*clipPaths, 1, grid, edges);
-  const detail::Arrangement arrangement = detail::splitEdges(edges);
-  const std::vector<detail::Side> sides = detail::classifyPieces(arrangement, how);
-  const detail::Contours contours = detail::traceContours(arrangement, sides);
-  return detail::buildNesting(arrangement, sides, contours, grid);
+PolygonSet resolve(const std::vector<InputEdge>& edges, const std::vector<ExactEdge>& exactEdges,
+                   const Combination& how, const Grid& grid) {
+  const Arrangement arrangement = splitEdges(edges, exactEdges);
+  const std::vector<Side> sides = classifyPieces(arrangement, how);
+  const Contours contours = traceContours(arrangement, sides);
+  return buildNesting(arrangement, sides, contours, grid);
+}
+
+// Intersection with one convex ring: pre-clip the other operand to it, then resolve that alone.
+PolygonSet intersectConvexRing(const Paths& other, FillRule otherRule, int otherOperand,
+                               const std::vector<IPoint>& convexRing, FillRule convexRule,
+                               const Grid& grid) {
+  if (!isFilled(convexRule, convexOrientation(convexRing))) return {};
+  Combination how;
+  how.subjectRule = otherRule;
+  return resolve({}, preclipConvex(snapRings(other, otherOperand, grid), convexRing), how, grid);
 }
 
 }  // namespace
 
+PolygonSet booleanGeneral(const Paths& subject, const Paths* clipPaths, const Combination& how,
+                          const Grid& grid) {
+  std::vector<InputEdge> edges;
+  appendInputEdges(subject, 0, grid, edges);
+  if (clipPaths != nullptr) appendInputEdges(*clipPaths, 1, grid, edges);
+  return resolve(edges, {}, how, grid);
+}
+
+}  // namespace detail
+
 PolygonSet simplify(const Paths& paths, FillRule rule, const Grid& grid) {
   detail::Combination how;
   how.subjectRule = rule;
-  return run(paths, nullptr, how, grid);
+  return detail::booleanGeneral(paths, nullptr, how, grid);
 }
 
 PolygonSet clip(ClipOp op, const Paths& subject, const Paths& clipPaths, FillRule subjectRule,
                 FillRule clipRule, const Grid& grid) {
+  if (op == ClipOp::Intersection) {
+    // The region-of-interest case: a convex clip ring takes the linear pre-clip path.
+    const auto clipRings = detail::snapRings(clipPaths, 1, grid);
+    if (clipRings.size() == 1 && detail::convexOrientation(clipRings[0]) != 0) {
+      return detail::intersectConvexRing(subject, subjectRule, 0, clipRings[0], clipRule, grid);
+    }
+    const auto subjectRings = detail::snapRings(subject, 0, grid);
+    if (subjectRings.size() == 1 && detail::convexOrientation(subjectRings[0]) != 0) {
+      return detail::intersectConvexRing(clipPaths, clipRule, 1, subjectRings[0], subjectRule,
+                                         grid);
+    }
+  }
   detail::Combination how;
   how.binary = true;
   how.op = op;
   how.subjectRule = subjectRule;
   how.clipRule = clipRule;
-  return run(subject, &clipPaths, how, grid);
+  return detail::booleanGeneral(subject, &clipPaths, how, grid);
 }
 
 PolygonSet intersect(const Paths& subject, const Paths& clipPaths, FillRule rule,

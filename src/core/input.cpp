@@ -61,12 +61,12 @@ void mergeStraightRuns(std::vector<IPoint>& ring) {
 
 }  // namespace
 
-void appendInputEdges(const Paths& paths, int operand, const Grid& grid,
-                      std::vector<InputEdge>& out) {
+std::vector<std::vector<IPoint>> snapRings(const Paths& paths, int operand, const Grid& grid) {
   if (!(grid.scale > 0.0) || !std::isfinite(grid.scale)) {
     throw InvalidInputError("grid scale must be positive and finite, got " +
                             std::to_string(grid.scale));
   }
+  std::vector<std::vector<IPoint>> rings;
   std::vector<IPoint> ring;
   for (std::size_t p = 0; p < paths.size(); ++p) {
     ring.clear();
@@ -77,7 +77,14 @@ void appendInputEdges(const Paths& paths, int operand, const Grid& grid,
     }
     while (ring.size() > 1 && ring.back() == ring.front()) ring.pop_back();
     mergeStraightRuns(ring);
-    if (ring.size() < 2) continue;  // a point encloses nothing
+    if (ring.size() >= 2) rings.push_back(ring);  // a point encloses nothing
+  }
+  return rings;
+}
+
+void appendInputEdges(const Paths& paths, int operand, const Grid& grid,
+                      std::vector<InputEdge>& out) {
+  for (const std::vector<IPoint>& ring : snapRings(paths, operand, grid)) {
     for (std::size_t i = 0; i < ring.size(); ++i) {
       const IPoint s = ring[i];
       const IPoint t = ring[(i + 1) % ring.size()];

@@ -23,6 +23,15 @@ struct InputEdge {
   int operand = 0;
 };
 
+/// An input edge whose ends are exact points (crossings) on the integer segment lineA-lineB;
+/// made by the convex pre-clip. left < right lexicographically.
+struct ExactEdge {
+  IPoint lineA, lineB;  ///< lineA < lineB
+  XPoint left, right;
+  int direction = 0;  ///< +1 when the path runs left -> right
+  int operand = 0;
+};
+
 /// Stage 0 (input.cpp): validate, snap to the grid, drop repeated points, emit the edges of
 /// every closed path. Throws InvalidInputError naming the path and vertex.
 void appendInputEdges(const Paths& paths, int operand, const Grid& grid,
@@ -54,7 +63,8 @@ struct Arrangement {
 /// Stage 1 (split_edges.cpp): sweep line over all edges. Finds every crossing, touching vertex
 /// and collinear overlap, splits edges there, merges coincident pieces and labels every piece
 /// with the winding numbers on both sides. O((n + k) log n) for n edges and k crossings.
-Arrangement splitEdges(const std::vector<InputEdge>& edges);
+Arrangement splitEdges(const std::vector<InputEdge>& edges,
+                       const std::vector<ExactEdge>& exactEdges = {});
 
 /// Which side of a piece is filled in the result.
 enum class Side : std::uint8_t { None = 0, Above = 1, Below = 2 };
@@ -89,9 +99,27 @@ struct Contours {
 };
 Contours traceContours(const Arrangement& arrangement, const std::vector<Side>& sides);
 
+/// Snap one operand's paths to the grid as closed rings of grid points (repeats and straight
+/// runs removed); rings with fewer than 2 points are dropped.
+std::vector<std::vector<IPoint>> snapRings(const Paths& paths, int operand, const Grid& grid);
+
+/// The ring's orientation (+1 counter-clockwise in the raw frame, -1 clockwise) when it is a
+/// strictly convex polygon winding once, else 0.
+int convexOrientation(const std::vector<IPoint>& ring);
+
+/// Convex pre-clip (convex_clip.cpp): Sutherland-Hodgman against each half-plane of a convex
+/// ring, exactly. Inside the ring, every winding number of `rings` is preserved; outside it,
+/// every winding number becomes 0. Output edges lie on integer input or clip segments.
+std::vector<ExactEdge> preclipConvex(const std::vector<std::vector<IPoint>>& rings,
+                                     const std::vector<IPoint>& convexRing);
+
 /// Stage 4 (nesting.cpp): give each hole its outer ring and each outer ring the hole it lies
 /// in, and emit the polygons in image coordinates with roiclip's output orientation.
 PolygonSet buildNesting(const Arrangement& arrangement, const std::vector<Side>& sides,
                         const Contours& contours, const Grid& grid);
+
+/// The general path (every operation, no convex shortcut): stages 0 to 4.
+PolygonSet booleanGeneral(const Paths& subject, const Paths* clipPaths, const Combination& how,
+                          const Grid& grid);
 
 }  // namespace roiclip::detail

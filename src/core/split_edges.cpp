@@ -41,10 +41,12 @@ struct EventAfter {
 
 class Sweep {
  public:
-  explicit Sweep(const std::vector<InputEdge>& edges) : status_(StatusLess{&active_}) {
-    active_.reserve(edges.size() * 2);
-    where_.resize(edges.size());
-    inStatus_.assign(edges.size(), 0);
+  Sweep(const std::vector<InputEdge>& edges, const std::vector<ExactEdge>& exactEdges)
+      : status_(StatusLess{&active_}) {
+    const std::size_t total = edges.size() + exactEdges.size();
+    active_.reserve(total);
+    where_.resize(total);
+    inStatus_.assign(total, 0);
     initial_.reserve(edges.size() * 2);
     for (const InputEdge& e : edges) {
       Active a;
@@ -57,10 +59,22 @@ class Sweep {
       initial_.push_back({e.b, int(active_.size()), true});
       active_.push_back(a);
     }
+    // Edges with off-grid ends start from the dynamic queue; their ends are plain events.
+    for (const ExactEdge& e : exactEdges) {
+      Active a;
+      a.left = e.left;
+      a.right = e.right;
+      a.lineA = e.lineA;
+      a.lineB = e.lineB;
+      a.contribution[e.operand] = e.direction;
+      queue_.push({e.left, int(active_.size())});
+      queue_.push({e.right, -1});
+      active_.push_back(a);
+    }
     std::sort(initial_.begin(), initial_.end(),
               [](const InitialEvent& a, const InitialEvent& b) { return a.point < b.point; });
-    out_.pieces.reserve(edges.size() + edges.size() / 4);
-    out_.vertices.reserve(edges.size() + 16);
+    out_.pieces.reserve(total + total / 4);
+    out_.vertices.reserve(total + 16);
   }
 
   Arrangement run() {
@@ -285,6 +299,9 @@ class Sweep {
 
 }  // namespace
 
-Arrangement splitEdges(const std::vector<InputEdge>& edges) { return Sweep(edges).run(); }
+Arrangement splitEdges(const std::vector<InputEdge>& edges,
+                       const std::vector<ExactEdge>& exactEdges) {
+  return Sweep(edges, exactEdges).run();
+}
 
 }  // namespace roiclip::detail
