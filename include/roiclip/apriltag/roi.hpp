@@ -5,6 +5,13 @@
 // order); the core reads it under whatever fill rule the caller chooses. When the tags a builder
 // needs were not detected it returns a failed RoiResult naming the ids needed and seen, never an
 // empty ROI.
+//
+//   const roiclip::apriltag::Detector detector;                  // tag36h11
+//   const auto tags = detector.detect(image);                      // cv::Mat, gray or BGR
+//   const auto board = roiclip::apriltag::Board::load("board.json");
+//   const roiclip::apriltag::RoiResult roi = roiclip::apriltag::boardRoi(board, tags, "inspection");
+//   if (!roi) std::cerr << roi.missing().describe() << '\n';   // e.g. "... missing [2]"
+//   else inside = roiclip::intersect(contours, roi.value(), roiclip::FillRule::NonZero);
 #pragma once
 
 #include <array>
