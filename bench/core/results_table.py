@@ -41,8 +41,16 @@ def main(path):
         rows[workload][lib] = b
 
     ctx = doc.get("context", {})
-    print(f"Host: {ctx.get('host_name', '?')}, {ctx.get('num_cpus', '?')} CPUs at "
-          f"{ctx.get('mhz_per_cpu', '?')} MHz, library build: {ctx.get('library_build_type', '?')}")
+    model = "?"
+    try:
+        with open("/proc/cpuinfo") as f:
+            model = next(line.split(":", 1)[1].strip() for line in f
+                         if line.startswith("model name"))
+    except (OSError, StopIteration):
+        pass
+    print(f"Machine: {model}, {ctx.get('num_cpus', '?')} CPUs at {ctx.get('mhz_per_cpu', '?')} MHz "
+          f"(host {ctx.get('host_name', '?')}), run {ctx.get('date', '?')}, "
+          f"load average {', '.join(f'{x:.2f}' for x in ctx.get('load_avg', []))}")
     print()
     header = ["workload", "vertices"] + [label for _, label in LIBRARIES] + [
         "roiclip peak MB", "Clipper peak MB", "max rel. area diff"]
@@ -57,7 +65,7 @@ def main(path):
             base_ms = base["cpu_time"] * TO_MS[base["time_unit"]]
         vertices = next((b.get("vertices") for b in libs.values() if "vertices" in b), None)
         cells = [workload, f"{vertices:.0f}" if vertices else "?"]
-        worst = 0.0
+        worst = None
         for key, label in LIBRARIES:
             b = libs.get(key)
             if b is None:
@@ -68,7 +76,8 @@ def main(path):
                 errors.append(f"{workload}/{key}: {b.get('error_message', '')}")
                 continue
             ms = b["cpu_time"] * TO_MS[b["time_unit"]]
-            worst = max(worst, b.get("rel_diff", 0.0))
+            if key != "roiclip":
+                worst = max(worst or 0.0, b.get("rel_diff", 0.0))
             if key == "roiclip" or base_ms is None:
                 cells.append(fmt_ms(ms))
             else:
@@ -76,7 +85,7 @@ def main(path):
         for key in ("roiclip", "clipper"):
             b = libs.get(key)
             cells.append(f"{b['peak_MB']:.1f}" if b and "peak_MB" in b else "–")
-        cells.append(f"{worst:.1e}")
+        cells.append("–" if worst is None else f"{worst:.1e}")
         print("| " + " | ".join(cells) + " |")
     if errors:
         print()
