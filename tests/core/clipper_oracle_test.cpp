@@ -79,20 +79,6 @@ AreaAndPerimeter measure(const ClipperLib::Paths& paths) {
 // most that displacement times the perimeter of its output.
 double roundingTolerance(const AreaAndPerimeter& m) { return m.perimeter * 0.71 / kUnits + 1e-9; }
 
-bool combine(ClipOp op, bool s, bool c) {
-  switch (op) {
-    case ClipOp::Intersection:
-      return s && c;
-    case ClipOp::Union:
-      return s || c;
-    case ClipOp::Difference:
-      return s && !c;
-    case ClipOp::Xor:
-      return s != c;
-  }
-  return false;
-}
-
 constexpr FillRule kRules[] = {FillRule::EvenOdd, FillRule::NonZero, FillRule::Positive,
                                FillRule::Negative};
 constexpr ClipOp kOps[] = {ClipOp::Intersection, ClipOp::Union, ClipOp::Difference, ClipOp::Xor};
@@ -162,7 +148,7 @@ TEST(ClipperOracle, ClipAreasAgree) {
           const double ours = clip(op, a, b, ra, rb).area();
           if (std::fabs(ours - expected.area) > roundingTolerance(expected)) {
             const double truth = testing::slabArea({&a, &b}, [&](const std::vector<long long>& w) {
-              return combine(op, isFilled(ra, w[0]), isFilled(rb, w[1]));
+              return testing::combine(op, isFilled(ra, w[0]), isFilled(rb, w[1]));
             });
             ASSERT_NEAR(ours, truth, 1e-6 * (truth + 1))
                 << toString(op) << " " << toString(ra) << "/" << toString(rb) << " A "

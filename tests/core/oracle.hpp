@@ -25,6 +25,22 @@ constexpr double kOracleScale = 4096.0;
 
 inline std::int64_t toOracle(double v) { return std::llround(v * kOracleScale); }
 
+/// The boolean operation on two memberships, written out here so that the oracle does not
+/// share code with the library.
+inline bool combine(ClipOp op, bool s, bool c) {
+  switch (op) {
+    case ClipOp::Intersection:
+      return s && c;
+    case ClipOp::Union:
+      return s || c;
+    case ClipOp::Difference:
+      return s && !c;
+    case ClipOp::Xor:
+      return s != c;
+  }
+  return false;
+}
+
 /// Exact winding number of `paths` around `p`, or nothing when p lies on an edge.
 inline std::optional<long long> exactWinding(const Paths& paths, Point p) {
   const std::int64_t px = toOracle(p.x), py = toOracle(p.y);

@@ -21,20 +21,6 @@ constexpr FillRule kRules[] = {FillRule::EvenOdd, FillRule::NonZero, FillRule::P
                                FillRule::Negative};
 constexpr ClipOp kOps[] = {ClipOp::Intersection, ClipOp::Union, ClipOp::Difference, ClipOp::Xor};
 
-bool combine(ClipOp op, bool s, bool c) {
-  switch (op) {
-    case ClipOp::Intersection:
-      return s && c;
-    case ClipOp::Union:
-      return s || c;
-    case ClipOp::Difference:
-      return s && !c;
-    case ClipOp::Xor:
-      return s != c;
-  }
-  return false;
-}
-
 // Kinds of random input, all inside [0, 20]^2:
 // 0 random vertices; 1 grid walk with step 2 (collinear runs, touching, overlapping edges);
 // 2 several random paths; 3 unit-step walk on a 6x6 grid (almost everything degenerate);
@@ -125,7 +111,7 @@ TEST_P(ClipProperty, MatchesWindingOracleAndAreaIdentities) {
           const auto report = sampleRegion(
               result, {&a, &b},
               [&](const std::vector<long long>& w) {
-                return combine(op, isFilled(ra, w[0]), isFilled(rb, w[1]));
+                return testing::combine(op, isFilled(ra, w[0]), isFilled(rb, w[1]));
               },
               -1.0, 21.0, 60, 5u + unsigned(iter));
           if (!problems.empty() || report.mismatches != 0) {
