@@ -189,3 +189,31 @@ TEST(Simplify, ParsesNames) {
 
 }  // namespace
 }  // namespace roiclip
+
+namespace roiclip {
+namespace {
+
+TEST(Simplify, ThousandNestedSquaresFormAParentChain) {
+  // Squares of half-size 1..1000 around the origin; even-odd keeps every other annulus.
+  Paths squares;
+  for (int k = 1; k <= 1000; ++k) {
+    squares.push_back({{-k, -k}, {k, -k}, {k, k}, {-k, k}});
+  }
+  const PolygonSet r = simplify(squares, FillRule::EvenOdd);
+  // Annuli between half-sizes 2j-1 and 2j (j = 1..500): area 4((2j)^2 - (2j-1)^2) = 4(4j - 1).
+  double expected = 0;
+  for (int j = 1; j <= 500; ++j) expected += 4.0 * (4 * j - 1);
+  EXPECT_NEAR(r.area(), expected, 1e-6);
+  ASSERT_EQ(r.polygons.size(), 500u);
+  EXPECT_EQ(r.ringCount(), 1000u);
+  // Outermost first; each next one lies in the previous one's hole.
+  for (std::size_t i = 0; i < r.polygons.size(); ++i) {
+    EXPECT_EQ(r.polygons[i].parent, int(i) - 1);
+    EXPECT_EQ(r.polygons[i].holes.size(), 1u);
+  }
+  // Non-zero: one solid square.
+  EXPECT_NEAR(simplify(squares, FillRule::NonZero).area(), 4e6, 1e-6);
+}
+
+}  // namespace
+}  // namespace roiclip
