@@ -177,5 +177,42 @@ TEST(ClipperOracle, ClipAreasAgree) {
       compared, agreed, clipperWrong);
 }
 
+TEST(ClipperOracle, LargePixelContourAgainstQuad) {
+  // A closed 8-connected pixel chain of ~70k vertices around a noisy circle of radius 3000,
+  // clipped by a perspective quad with sub-pixel corners: the convex path and the general path
+  // both agree with Clipper 1.
+  std::mt19937 rng(1);
+  Path contour;
+  double r = 3000;
+  int px = 3000, py = 0;
+  for (int i = 0; i < 100000; ++i) {
+    const double t = 2 * M_PI * i / 100000;
+    r += double(int(rng() % 3) - 1);
+    const int tx = int(std::lround(r * std::cos(t))), ty = int(std::lround(r * std::sin(t)));
+    while (px != tx || py != ty) {
+      px += (tx > px) - (tx < px);
+      py += (ty > py) - (ty < py);
+      contour.emplace_back(px, py);
+    }
+  }
+  ASSERT_GT(contour.size(), 50000u);
+  const Paths subject = {contour};
+  const Paths quad = {{{-2000.3, -2500.7}, {2600.2, -1800.1}, {2100.9, 2300.4}, {-2400.5, 1900.2}}};
+  ClipperLib::Clipper c;
+  c.AddPaths(toClipper(subject), ClipperLib::ptSubject, true);
+  c.AddPaths(toClipper(quad), ClipperLib::ptClip, true);
+  ClipperLib::Paths solution;
+  ASSERT_TRUE(c.Execute(ClipperLib::ctIntersection, solution, ClipperLib::pftEvenOdd,
+                        ClipperLib::pftEvenOdd));
+  const AreaAndPerimeter expected = measure(solution);
+  const PolygonSet convexPath = intersect(subject, quad);
+  EXPECT_NEAR(convexPath.area(), expected.area, roundingTolerance(expected));
+  // Union and difference take the general path; |A| = |A - Q| + |A n Q| ties them together.
+  const double whole = simplify(subject, FillRule::EvenOdd).area();
+  EXPECT_NEAR(subtract(subject, quad).area() + convexPath.area(), whole, 1e-6 * whole);
+  EXPECT_NEAR(unite(subject, quad).area() + convexPath.area(),
+              whole + std::fabs(signedArea(quad[0])), 1e-6 * whole);
+}
+
 }  // namespace
 }  // namespace roiclip
