@@ -186,8 +186,9 @@ const DetectorOptions& Detector::options() const {
   return impl_->options;
 }
 
-std::vector<Detection> Detector::detect(const cv::Mat& image) const {
+std::vector<Detection> Detector::detect(cv::InputArray input) const {
   if (!impl_) throw Error("roiclip::apriltag::Detector used after it was moved from");
+  const cv::Mat image = input.getMat();  // a view for cv::Mat input, no copy
   if (image.empty()) throw InvalidInputError("AprilTag detect: the input image is empty");
   if (image.dims != 2 || image.depth() != CV_8U ||
       (image.channels() != 1 && image.channels() != 3 && image.channels() != 4)) {

@@ -108,12 +108,12 @@ class Detector {
   Detector& operator=(const Detector&) = delete;
 
   /// Detect all tags of the family in `image`.
-  /// @param image 8-bit gray (CV_8UC1, used without a copy, any row step), BGR (CV_8UC3) or
-  ///        BGRA (CV_8UC4, converted to gray). Never modified.
+  /// @param image 8-bit gray (CV_8UC1; a cv::Mat is used without a copy, any row step), BGR
+  ///        (CV_8UC3) or BGRA (CV_8UC4, converted to gray). Never modified.
   /// @return detections sorted by id (then by centre x), coordinates in OpenCV convention.
   /// @throws InvalidInputError if the image is empty or not 8-bit with 1, 3 or 4 channels.
   /// @throws Error if this Detector was moved from.
-  [[nodiscard]] std::vector<Detection> detect(const cv::Mat& image) const;
+  [[nodiscard]] std::vector<Detection> detect(cv::InputArray image) const;
 
   [[nodiscard]] const DetectorOptions& options() const;
 
