@@ -2,7 +2,9 @@
 """Turn roiclip_bench JSON output (--benchmark_out_format=json) into the Markdown table of
 bench/RESULTS.md: CPU time per operation for each library and its ratio to roiclip
 (ratio > 1 means roiclip is faster), plus heap peaks. With --benchmark_repetitions the median
-aggregate is used."""
+aggregate is used. Several JSON files (e.g. a repeated pass and a single heavy pass) are merged;
+the machine line comes from the first."""
+import argparse
 import json
 import sys
 
@@ -19,11 +21,14 @@ def fmt_ms(ms):
     return f"{ms * 1000:.3g} µs"
 
 
-def main(path):
-    with open(path) as f:
-        doc = json.load(f)
+def main(paths, order_file=None):
+    docs = []
+    for path in paths:
+        with open(path) as f:
+            docs.append(json.load(f))
+    doc = docs[0]
     runs = {}
-    for b in doc["benchmarks"]:
+    for b in (b for d in docs for b in d["benchmarks"]):
         if b.get("run_type") == "aggregate" and b.get("aggregate_name") != "median":
             continue
         name = b.get("run_name", b["name"])
@@ -39,6 +44,12 @@ def main(path):
             rows[workload] = {}
             order.append(workload)
         rows[workload][lib] = b
+    if order_file:
+        # Rows in registration order (the output of --benchmark_list_tests).
+        with open(order_file) as f:
+            listed = [line.strip().rsplit("/", 1)[0] for line in f if "/" in line]
+        rank = {w: i for i, w in reversed(list(enumerate(listed)))}
+        order.sort(key=lambda w: rank.get(w, len(rank)))
 
     ctx = doc.get("context", {})
     model = "?"
@@ -95,6 +106,8 @@ def main(path):
 
 
 if __name__ == "__main__":
-    if len(sys.argv) != 2:
-        sys.exit("usage: results_table.py roiclip_bench_output.json")
-    main(sys.argv[1])
+    parser = argparse.ArgumentParser(description=__doc__)
+    parser.add_argument("json", nargs="+", help="roiclip_bench --benchmark_out JSON files")
+    parser.add_argument("--order", help="--benchmark_list_tests output: row order")
+    args = parser.parse_args()
+    main(args.json, args.order)
