@@ -1,11 +1,21 @@
 // roiclip command line. Subcommands are thin: parse, call the library, write.
+#include <algorithm>
+#include <fstream>
 #include <iostream>
+#include <sstream>
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
 #include <roiclip/io/geojson.hpp>
 #include <roiclip/roiclip.hpp>
+
+#ifdef ROICLIP_HAVE_BATCH
+#include <roiclip/batch/run.hpp>
+
+#include "run_command.hpp"
+#endif
 
 namespace {
 
@@ -68,11 +78,13 @@ int main(int argc, char** argv) {
   CLI::App app{"roiclip: exact clipping of self-intersecting polygons"};
   app.footer(kExitCodesHelp);
   app.require_subcommand(1);
-  std::string input = "images";
-  std::string output = "out";
-  auto* run = app.add_subcommand("run", "process a folder of images (AprilTag ROI + contours)");
-  run->add_option("input", input, "folder of images")->capture_default_str();
-  run->add_option("-o,--output", output, "output folder")->capture_default_str();
+#ifdef ROICLIP_HAVE_BATCH
+  RunCommand runCommand(app);
+  auto* run = runCommand.subcommand();
+#else
+  auto* run = app.add_subcommand("run", "process a folder of images (not built: needs AprilTag)");
+  run->allow_extras();
+#endif
 
   // Input files: GeoJSON (Polygon, MultiPolygon, Feature, FeatureCollection; every ring is one
   // path) or plain {"paths": [[[x, y], ...], ...]}. Output: GeoJSON FeatureCollection.
@@ -120,16 +132,31 @@ int main(int argc, char** argv) {
   addGridScale(clipCmd);
 
   try {
+#ifdef ROICLIP_HAVE_BATCH
+    // Options from --config go in front of the command line's own, so the command line wins.
+    const std::vector<std::string> args = RunCommand::withConfig(argc, argv);
+    std::vector<const char*> argvWithConfig;
+    for (const auto& a : args) argvWithConfig.push_back(a.c_str());
+    app.parse(static_cast<int>(argvWithConfig.size()), argvWithConfig.data());
+#else
     app.parse(argc, argv);
+#endif
   } catch (const CLI::ParseError& e) {
     return app.exit(e) == 0 ? kExitOk : kExitUsage;
+  } catch (const roiclip::InvalidInputError& e) {
+    std::cerr << "roiclip: error: " << e.what() << "\n";
+    return kExitBadInput;
   }
 
   try {
     if (run->parsed()) {
-      std::cerr << "roiclip run: the batch pipeline (tag detection, contours, clipping) is not "
-                   "built yet; it needs the AprilTag layer, the OpenCV layer and the batch app.\n";
-      return 0;
+#ifdef ROICLIP_HAVE_BATCH
+      return runCommand.execute();
+#else
+      std::cerr << "roiclip run: this build has no batch pipeline (configure with "
+                   "ROICLIP_BUILD_APRILTAG=ON).\n";
+      return kExitUsage;
+#endif
     }
     if (simplifyCmd->parsed()) {
       const roiclip::Paths paths = roiclip::io::readPaths(simplifyInput);

@@ -1,0 +1,128 @@
+// roiclip::batch: `roiclip run` over a folder of images, as a library function.
+//
+// Output folder layout (every file written atomically: a temporary file in the same folder,
+// then a rename, so an interrupted run never leaves a half-written NAME.* file):
+//   NAME.json          resultToJson() of the image
+//   NAME.overlay.png   renderOverlay() (only when the pipeline got as far as the ROI)
+//   NAME.mask.png      renderMask() (only with writeMasks)
+//   summary.csv        one row per image (see kSummaryColumns)
+//   summary.json       the same rows plus run totals
+//   report.html        every overlay with its figures
+// NAME is the image's path relative to the input folder without its extension (with it when
+// two images would otherwise share a name), so sub-folders are mirrored with `recursive`.
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <roiclip/batch/process.hpp>
+
+namespace roiclip::batch {
+
+/// Image file extensions run() picks up (lower case, compared case-insensitively).
+const std::vector<std::string>& imageExtensions();
+
+/// Options of a run.
+struct BatchOptions {
+  std::filesystem::path input;   ///< folder of images
+  std::filesystem::path output;  ///< output folder (created if missing)
+  RunOptions process;            ///< per-image pipeline
+  int jobs = 0;                  ///< parallel workers; 0 = all hardware threads
+  bool recursive = false;        ///< descend into sub-folders (symlinked folders are not followed)
+  bool force = false;            ///< reprocess images whose outputs are complete and up to date
+  bool writeMasks = false;       ///< also write NAME.mask.png
+  bool writeReport = true;       ///< write report.html
+};
+
+/// One row of the summary.
+struct ImageRecord {
+  std::string image;  ///< path relative to the input folder ('/' separated)
+  std::string name;   ///< output NAME (relative to the output folder)
+  Status status = Status::Failed;
+  FailureKind failure = FailureKind::Internal;
+  std::string reason;
+  bool skipped = false;  ///< outputs were up to date; figures read back from NAME.json
+  int width = 0, height = 0;
+  int tagsFound = 0;
+  double roiArea = 0;
+  int contoursIn = 0, contoursOut = 0;
+  double clippedArea = 0;
+  double iou = 1.0;                    ///< exact raster route
+  std::int64_t offBandMismatches = 0;  ///< over all comparisons
+  double seconds = 0;                  ///< processing time (0 when skipped)
+};
+
+/// CSV header of summary.csv.
+extern const char* const kSummaryColumns;
+
+/// Progress, reported after every image (from worker threads, one call at a time).
+struct Progress {
+  std::size_t done = 0;  ///< images finished (processed, skipped or failed)
+  std::size_t total = 0;
+  std::size_t skipped = 0;
+  std::size_t failed = 0;             ///< status other than Ok
+  double elapsed = 0;                 ///< seconds since the run started
+  const ImageRecord* last = nullptr;  ///< the image just finished
+};
+using ProgressCallback = std::function<void(const Progress&)>;
+
+/// What run() did.
+struct RunSummary {
+  std::vector<ImageRecord> images;  ///< in input order; only images finished when interrupted
+  std::size_t total = 0;            ///< images found
+  std::size_t ok = 0, noRoi = 0, failed = 0, mismatched = 0, skipped = 0;
+  bool interrupted = false;
+  double seconds = 0;
+  /// True when every finished image is Ok and the run was not interrupted.
+  [[nodiscard]] bool allOk() const {
+    return !interrupted && ok == images.size() && images.size() == total;
+  }
+};
+
+/// The image files under `input` (sorted by path), recursively when asked.
+/// @throws InvalidInputError if `input` is not a readable folder.
+std::vector<std::filesystem::path> findImages(const std::filesystem::path& input, bool recursive);
+
+/// Output NAME for `relative` (an image path relative to the input folder): the path without
+/// its extension, or with the extension kept (`keepExtension`). Only plain names are allowed:
+/// absolute paths, "..", "." and empty components are rejected, so the result can never point
+/// outside the output folder.
+/// @throws InvalidInputError for such a path.
+std::string outputName(const std::filesystem::path& relative, bool keepExtension = false);
+
+/// Write `bytes` to `file` atomically (temporary file in the same folder, then rename).
+/// @throws Error naming the file if it cannot be written.
+void writeFileAtomic(const std::filesystem::path& file, const std::string& bytes);
+
+/// Process every image of options.input into options.output, `jobs` at a time, each worker
+/// holding one image at a time (memory is bounded by jobs x one image). Per-image failures are
+/// recorded and the run carries on. Images whose NAME.json (status ok) and NAME.overlay.png
+/// (and NAME.mask.png when asked) are newer than the image are skipped unless options.force.
+/// When `cancel` becomes true, no new image is started; images in flight finish (their files
+/// are complete or absent), then the summary of what was done is written and
+/// RunSummary::interrupted is set.
+/// @throws InvalidInputError if the input folder cannot be read or the pipeline options are bad
+///         (ROI spec, board file); Error if the output folder cannot be created or written.
+RunSummary run(const BatchOptions& options, const ProgressCallback& progress = {},
+               const std::atomic<bool>* cancel = nullptr);
+
+/// summary.csv text for `summary`.
+std::string summaryCsv(const RunSummary& summary);
+/// summary.json text for `summary`.
+std::string summaryJson(const RunSummary& summary, const BatchOptions& options);
+/// report.html text: every overlay (linked relative to the output folder) with its figures.
+std::string reportHtml(const RunSummary& summary, const BatchOptions& options);
+
+/// Turn a JSON config object into command-line arguments: {"jobs": 2, "force": true,
+/// "roi": "hull"} -> ["--jobs", "2", "--force", "--roi", "hull"]. Booleans become a flag when
+/// true and are left out when false; arrays repeat the option. Keys are long option names
+/// without the dashes. The app puts these before its own arguments so the command line wins.
+/// @throws InvalidInputError naming `source` for malformed JSON or a non-object.
+std::vector<std::string> configToArguments(const std::string& jsonText,
+                                           const std::string& source = "config");
+
+}  // namespace roiclip::batch
