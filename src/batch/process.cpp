@@ -482,9 +482,27 @@ Json comparisonJson(const opencv::MaskComparison& c) {
 
 }  // namespace
 
-std::string resultToJson(const ImageResult& r, const std::string& imageName) {
+std::string optionsKey(const RunOptions& o) {
+  std::ostringstream os;
+  os.precision(17);
+  const ContourOptions& c = o.contours;
+  os << "roi=" << o.roi << ";board=" << o.boardFile << ";family=" << o.detector.family
+     << ";decimate=" << o.detector.quadDecimate << ";sigma=" << o.detector.quadSigma
+     << ";refine=" << o.detector.refineEdges << ";sharpen=" << o.detector.decodeSharpening
+     << ";bits=" << o.detector.maxBitsCorrected << ";method=" << static_cast<int>(c.method)
+     << ";polarity=" << static_cast<int>(c.polarity) << ";threshold=" << c.threshold
+     << ";block=" << c.adaptiveBlock << ";c=" << c.adaptiveC << ";canny=" << c.cannyLow << ","
+     << c.cannyHigh << ";approx=" << c.approxEpsilon << ";min_area=" << c.minArea
+     << ";fill=" << toString(o.subjectFillRule) << ";roi_fill=" << toString(o.roiFillRule)
+     << ";grid=" << o.grid.scale;
+  return os.str();
+}
+
+std::string resultToJson(const ImageResult& r, const std::string& imageName,
+                         const std::string& optionsKey) {
   Json j;
   j["image"] = imageName;
+  if (!optionsKey.empty()) j["options"] = optionsKey;
   j["status"] = toString(r.status);
   j["failure"] = toString(r.failure);
   j["reason"] = r.reason;

@@ -75,7 +75,7 @@ bool notOlder(const fs::path& output, const fs::file_time_type& inputTime) {
   return !ec && t >= inputTime;
 }
 
-std::optional<ImageRecord> readRecord(const fs::path& jsonFile) {
+std::optional<ImageRecord> readRecord(const fs::path& jsonFile, const std::string& key) {
   std::ifstream in(jsonFile, std::ios::binary);
   if (!in) return std::nullopt;
   const Json j = Json::parse(in, nullptr, false);
@@ -83,6 +83,7 @@ std::optional<ImageRecord> readRecord(const fs::path& jsonFile) {
   try {
     ImageRecord r;
     if (j.at("status").get<std::string>() != "ok") return std::nullopt;
+    if (j.value("options", std::string()) != key) return std::nullopt;  // other options
     r.status = Status::Ok;
     r.failure = FailureKind::None;
     r.width = j.at("width").get<int>();
@@ -127,7 +128,7 @@ struct Job {
 class Runner {
  public:
   Runner(const BatchOptions& options, std::vector<Job> jobs)
-      : options_(options), jobs_(std::move(jobs)) {}
+      : options_(options), jobs_(std::move(jobs)), key_(optionsKey(options.process)) {}
 
   ImageRecord processOne(const Processor& processor, const Job& job) const {
     const fs::path base = options_.output / fs::path(job.name);
@@ -144,7 +145,7 @@ class Runner {
       const auto inputTime = fs::last_write_time(job.image, ec);
       if (!ec && notOlder(jsonFile, inputTime) && notOlder(overlayFile, inputTime) &&
           (!options_.writeMasks || notOlder(maskFile, inputTime))) {
-        if (auto rec = readRecord(jsonFile)) {
+        if (auto rec = readRecord(jsonFile, key_)) {
           rec->skipped = true;
           return *rec;
         }
@@ -171,7 +172,7 @@ class Runner {
       fs::remove(overlayFile, ec);  // a stale overlay from an earlier run would mislead
     }
     // NAME.json last: its presence with status ok is what marks the image as complete.
-    writeFileAtomic(jsonFile, resultToJson(result, job.rel));
+    writeFileAtomic(jsonFile, resultToJson(result, job.rel, key_));
     return recordOf(result);
   }
 
@@ -266,6 +267,7 @@ class Runner {
  private:
   const BatchOptions& options_;
   std::vector<Job> jobs_;
+  std::string key_;
 };
 
 std::string csvField(const std::string& s) {

@@ -185,7 +185,12 @@ cv::Mat renderMask(const ImageResult& result, const Grid& grid = {});
 
 /// NAME.json text for one image: status, reason, size, tags, ROI, every clipped polygon with
 /// holes (image coordinates), areas, mask-check figures, stage times. `imageName` is stored
-/// as "image".
-std::string resultToJson(const ImageResult& result, const std::string& imageName);
+/// as "image", `optionsKey` (when not empty) as "options" (see optionsKey()).
+std::string resultToJson(const ImageResult& result, const std::string& imageName,
+                         const std::string& optionsKey = {});
+
+/// Every option that changes processImage()'s result, as one line of text. A run stores it in
+/// NAME.json and only skips an image when it matches, so changing an option reprocesses.
+std::string optionsKey(const RunOptions& options);
 
 }  // namespace roiclip::batch

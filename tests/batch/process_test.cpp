@@ -1,0 +1,313 @@
+// processImage() on the bundled scenes (against the generator's exact ground truth) and on
+// every per-image failure path.
+#include <cmath>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include <roiclip/batch/process.hpp>
+#include <roiclip/batch/run.hpp>
+
+namespace rb = roiclip::batch;
+using Json = nlohmann::json;
+
+namespace {
+
+const std::string kImages = ROICLIP_IMAGES;
+const rb::RunOptions kDefaults;
+
+Json loadJson(const std::string& file) {
+  std::ifstream in(file);
+  EXPECT_TRUE(in.good()) << file;
+  return Json::parse(in);
+}
+
+roiclip::Paths pathsFrom(const Json& j) {
+  roiclip::Paths paths;
+  for (const auto& p : j) {
+    roiclip::Path path;
+    for (const auto& v : p) path.emplace_back(v[0].get<double>(), v[1].get<double>());
+    paths.push_back(path);
+  }
+  return paths;
+}
+
+double perimeter(const roiclip::PolygonSet& set) {
+  double total = 0;
+  for (const auto& ring : set.toPaths()) {
+    for (std::size_t i = 0; i < ring.size(); ++i) {
+      const auto d = ring[(i + 1) % ring.size()] - ring[i];
+      total += std::hypot(d.x, d.y);
+    }
+  }
+  return total;
+}
+
+struct Truth {
+  roiclip::Paths shapes;  // all shapes; they do not overlap, so even-odd over all is their union
+  Json scene;
+};
+
+Truth loadTruth(const std::string& scene) {
+  Truth t;
+  t.scene = loadJson(kImages + "/" + scene + ".json");
+  for (const auto& s : t.scene["shapes"]) {
+    const roiclip::Paths p = pathsFrom(s["paths"]);
+    t.shapes.insert(t.shapes.end(), p.begin(), p.end());
+  }
+  return t;
+}
+
+roiclip::Paths truthRoi(const Truth& t, const std::string& name) {
+  for (const auto& r : t.scene["rois"]) {
+    if (r["name"] == name) return pathsFrom(r["paths"]);
+  }
+  ADD_FAILURE() << "no ROI " << name;
+  return {};
+}
+
+void expectOrientedRings(const roiclip::PolygonSet& set) {
+  for (const auto& poly : set.polygons) {
+    EXPECT_LT(roiclip::signedArea(poly.outer), 0.0);
+    for (const auto& hole : poly.holes) EXPECT_GT(roiclip::signedArea(hole), 0.0);
+  }
+}
+
+class BatchScene : public ::testing::TestWithParam<std::string> {};
+
+// The stated tolerance. cv::findContours traces the centres of the boundary pixels of the
+// thresholded image, so the contour polygon lies about half a pixel inside the true boundary
+// (a 1-px line has zero contour area): the measured area is short by about 0.5 px times the
+// boundary length inside the ROI. Allowed: |measured - truth| <= 0.5 px * perimeter of the true
+// clipped region (which includes the ROI cut edges, where the clip is exact) + 1% of the truth.
+// Measured on the eight scenes: the measured area is 0.14 to 0.30 px * perimeter short.
+constexpr double kPerimeterTolerance = 0.5;
+constexpr double kRelativeTolerance = 0.01;
+
+TEST_P(BatchScene, BoardRoiAreasMatchGroundTruth) {
+  const std::string scene = GetParam();
+  const Truth truth = loadTruth(scene);
+  const cv::Mat image = cv::imread(kImages + "/" + scene + ".png", cv::IMREAD_UNCHANGED);
+  ASSERT_FALSE(image.empty());
+  rb::RunOptions options;
+  options.boardFile = kImages + "/board.json";
+  for (const std::string roiName : {"inspection", "window"}) {
+    options.roi = "board:" + roiName;
+    const rb::ImageResult r = rb::processImage(image, options);
+    ASSERT_EQ(r.status, rb::Status::Ok) << scene << " " << roiName << ": " << r.reason;
+    EXPECT_EQ(r.offBandMismatches(), 0);
+    ASSERT_TRUE(r.vectorVsOpenCv.has_value());  // even-odd both: the cv::fillPoly route too
+    EXPECT_EQ(r.width, image.cols);
+    EXPECT_EQ(r.height, image.rows);
+    EXPECT_EQ(r.tags.size(), 4u);
+    expectOrientedRings(r.clipped);
+    // Contours never overlap, so the per-contour clips add up to the clip of all of them.
+    EXPECT_NEAR(r.contourClippedAreaSum, r.clippedArea, 1e-6 * (1 + r.clippedArea));
+
+    const roiclip::PolygonSet expected =
+        roiclip::intersect(truth.shapes, truthRoi(truth, roiName), roiclip::FillRule::EvenOdd);
+    const double tolerance =
+        kPerimeterTolerance * perimeter(expected) + kRelativeTolerance * expected.area();
+    EXPECT_NEAR(r.clippedArea, expected.area(), tolerance) << scene << " " << roiName;
+    EXPECT_LT(r.clippedArea, expected.area()) << "contours run through boundary pixel centres";
+    std::cout << "[ figures  ] " << scene << " " << roiName << ": clipped " << r.clippedArea
+              << " px2, truth " << expected.area() << " px2, diff "
+              << r.clippedArea - expected.area() << ", tolerance " << tolerance << ", perimeter "
+              << perimeter(expected) << "\n";
+    const roiclip::PolygonSet roiTruth =
+        roiclip::simplify(truthRoi(truth, roiName), roiclip::FillRule::EvenOdd);
+    // Fitted board ROI within 0.17 px of the truth (images/README.md): area within 0.5 px * P.
+    EXPECT_NEAR(r.roiArea, roiTruth.area(), 0.5 * perimeter(roiTruth));
+  }
+}
+
+TEST_P(BatchScene, DefaultHullContainsEveryTagCorner) {
+  const std::string scene = GetParam();
+  const Truth truth = loadTruth(scene);
+  const cv::Mat image = cv::imread(kImages + "/" + scene + ".png", cv::IMREAD_GRAYSCALE);
+  const rb::ImageResult r = rb::processImage(image, kDefaults);
+  ASSERT_EQ(r.status, rb::Status::Ok) << r.reason;
+  EXPECT_EQ(r.offBandMismatches(), 0);
+  roiclip::Paths corners;
+  for (const auto& tag : truth.scene["tags"])
+    corners.push_back(pathsFrom(Json::array({tag["corners"]}))[0]);
+  // The hull of the true corners vs the ROI built from detected corners (0.23 px error).
+  std::vector<cv::Point2f> pts;
+  for (const auto& c : corners) {
+    for (const auto& p : c) pts.emplace_back(static_cast<float>(p.x), static_cast<float>(p.y));
+  }
+  std::vector<cv::Point2f> hull;
+  cv::convexHull(pts, hull);
+  const double hullArea = cv::contourArea(hull);
+  const double hullPerimeter = cv::arcLength(hull, true);
+  EXPECT_NEAR(r.roiArea, hullArea, 0.25 * hullPerimeter);
+  // Every clipped vertex lies in the ROI's bounding box.
+  const cv::Rect2f box = cv::boundingRect(hull);
+  for (const auto& ring : r.clipped.toPaths()) {
+    for (const auto& p : ring) {
+      EXPECT_GE(p.x, box.x - 0.5);
+      EXPECT_LE(p.x, box.x + box.width + 0.5);
+      EXPECT_GE(p.y, box.y - 0.5);
+      EXPECT_LE(p.y, box.y + box.height + 0.5);
+    }
+  }
+  // The overlay has the image's size and is colour; the mask is the clipped region.
+  const cv::Mat overlay = rb::renderOverlay(image, r);
+  EXPECT_EQ(overlay.size(), image.size());
+  EXPECT_EQ(overlay.type(), CV_8UC3);
+  const cv::Mat mask = rb::renderMask(r);
+  EXPECT_EQ(mask.size(), image.size());
+  EXPECT_NEAR(cv::countNonZero(mask), r.clippedArea, 0.1 * r.clippedArea);
+}
+
+INSTANTIATE_TEST_SUITE_P(Bundled, BatchScene,
+                         ::testing::Values("scene_01", "scene_02", "scene_03", "scene_04",
+                                           "scene_05", "scene_06", "scene_07", "scene_08"));
+
+// --- image types -----------------------------------------------------------------------------
+
+TEST(BatchImageTypes, SixteenBitAndColourGiveTheSameResultAsGray) {
+  const cv::Mat gray = cv::imread(kImages + "/scene_02.png", cv::IMREAD_GRAYSCALE);
+  ASSERT_EQ(gray.type(), CV_8UC1);
+  cv::Mat bgr, bgra, gray16;
+  cv::cvtColor(gray, bgr, cv::COLOR_GRAY2BGR);
+  cv::cvtColor(gray, bgra, cv::COLOR_GRAY2BGRA);
+  gray.convertTo(gray16, CV_16U, 257.0);  // 255 * 257 = 65535: exact round trip
+  const rb::ImageResult ref = rb::processImage(gray, kDefaults);
+  ASSERT_EQ(ref.status, rb::Status::Ok);
+  for (const cv::Mat& m : {bgr, bgra, gray16}) {
+    const rb::ImageResult r = rb::processImage(m, kDefaults);
+    ASSERT_EQ(r.status, rb::Status::Ok) << r.reason;
+    EXPECT_EQ(r.tags.size(), ref.tags.size());
+    EXPECT_EQ(r.contoursIn, ref.contoursIn);
+    EXPECT_DOUBLE_EQ(r.clippedArea, ref.clippedArea);
+  }
+  EXPECT_THROW(rb::toGray8(cv::Mat(), "x"), roiclip::InvalidInputError);
+  EXPECT_THROW(rb::toGray8(cv::Mat(4, 4, CV_8UC2), "x"), roiclip::InvalidInputError);
+}
+
+// --- failure paths ---------------------------------------------------------------------------
+
+TEST(BatchFailures, EmptyImageIsFailedInvalidInput) {
+  const rb::ImageResult r = rb::processImage(cv::Mat(), kDefaults);
+  EXPECT_EQ(r.status, rb::Status::Failed);
+  EXPECT_EQ(r.failure, rb::FailureKind::InvalidInput);
+  EXPECT_FALSE(r.reason.empty());
+}
+
+TEST(BatchFailures, ImageWithoutTagsIsNoRoi) {
+  cv::Mat blank(240, 320, CV_8UC1, cv::Scalar(230));
+  cv::circle(blank, {160, 120}, 40, cv::Scalar(30), cv::FILLED);  // contours, but no tags
+  const rb::ImageResult r = rb::processImage(blank, kDefaults);
+  EXPECT_EQ(r.status, rb::Status::NoRoi);
+  EXPECT_EQ(r.failure, rb::FailureKind::NoTags);
+  EXPECT_NE(r.reason.find("no tag36h11 tags"), std::string::npos) << r.reason;
+  EXPECT_TRUE(r.clipped.empty());
+  EXPECT_EQ(r.contoursIn, 0);
+}
+
+TEST(BatchFailures, MissingRequiredIdIsNoRoiNamingTheId) {
+  const cv::Mat image = cv::imread(kImages + "/scene_03.png", cv::IMREAD_GRAYSCALE);
+  rb::RunOptions options;
+  options.roi = "tags:0,1,2,9";
+  const rb::ImageResult r = rb::processImage(image, options);
+  EXPECT_EQ(r.status, rb::Status::NoRoi);
+  EXPECT_EQ(r.failure, rb::FailureKind::MissingTags);
+  ASSERT_TRUE(r.missingTags.has_value());
+  EXPECT_EQ(r.missingTags->missing, std::vector<int>{9});
+  EXPECT_NE(r.reason.find("9"), std::string::npos) << r.reason;
+  EXPECT_EQ(r.tags.size(), 4u);  // what was seen is still reported
+}
+
+TEST(BatchFailures, BadOptionsAreFailedInvalidInput) {
+  const cv::Mat image = cv::imread(kImages + "/scene_03.png", cv::IMREAD_GRAYSCALE);
+  rb::RunOptions badSpec;
+  badSpec.roi = "polygon:1,2";
+  EXPECT_EQ(rb::processImage(image, badSpec).failure, rb::FailureKind::InvalidInput);
+  rb::RunOptions noBoard;
+  noBoard.roi = "board:inspection";
+  const rb::ImageResult r = rb::processImage(image, noBoard);
+  EXPECT_EQ(r.status, rb::Status::Failed);
+  EXPECT_NE(r.reason.find("--board"), std::string::npos) << r.reason;
+  EXPECT_THROW(rb::Processor{noBoard}, roiclip::InvalidInputError);
+}
+
+TEST(BatchFailures, UnreadableFileThrowsNamingIt) {
+  const std::string file = std::string(ROICLIP_TEST_DATA) + "/batch/corrupt.png";
+  try {
+    (void)rb::readImage(file);
+    FAIL() << "no exception";
+  } catch (const roiclip::InvalidInputError& e) {
+    EXPECT_NE(std::string(e.what()).find("corrupt.png"), std::string::npos);
+  }
+}
+
+// --- options parsing -------------------------------------------------------------------------
+
+TEST(BatchOptions, ContourMethodAndPolarity) {
+  rb::ContourOptions o;
+  rb::parseContourMethod("threshold:90", o);
+  EXPECT_EQ(o.method, rb::ContourMethod::Threshold);
+  EXPECT_EQ(o.threshold, 90);
+  rb::parseContourMethod("adaptive", o);
+  EXPECT_EQ(o.method, rb::ContourMethod::Adaptive);
+  for (const char* bad : {"threshold:", "threshold:300", "threshold:9x", "sobel", ""}) {
+    EXPECT_THROW(rb::parseContourMethod(bad, o), roiclip::InvalidInputError) << bad;
+  }
+  EXPECT_EQ(rb::parsePolarity("light"), rb::Polarity::Light);
+  EXPECT_THROW(rb::parsePolarity("bright"), roiclip::InvalidInputError);
+}
+
+TEST(BatchOptions, EveryContourMethodRunsAndPassesTheMaskCheck) {
+  const cv::Mat image = cv::imread(kImages + "/scene_04.png", cv::IMREAD_GRAYSCALE);
+  for (const char* method : {"otsu", "adaptive", "canny", "threshold:120"}) {
+    rb::RunOptions options;
+    rb::parseContourMethod(method, options.contours);
+    options.contours.approxEpsilon = 1.5;  // self-intersecting contours are allowed
+    const rb::ImageResult r = rb::processImage(image, options);
+    EXPECT_EQ(r.status, rb::Status::Ok) << method << ": " << r.reason;
+    EXPECT_GT(r.contoursOut, 0) << method;
+    EXPECT_EQ(r.offBandMismatches(), 0) << method;
+  }
+}
+
+TEST(BatchOptions, MinAreaDropsSmallContours) {
+  const cv::Mat image = cv::imread(kImages + "/scene_06.png", cv::IMREAD_GRAYSCALE);
+  rb::RunOptions all;
+  rb::RunOptions big;
+  big.contours.minArea = 200.0;
+  const rb::ImageResult a = rb::processImage(image, all);
+  const rb::ImageResult b = rb::processImage(image, big);
+  EXPECT_LT(b.contoursIn, a.contoursIn);
+  for (const auto& c : b.contours) EXPECT_GE(c.inputArea, 200.0 - 1e-9);
+}
+
+TEST(BatchJson, ResultJsonHasEveryFigure) {
+  const cv::Mat image = cv::imread(kImages + "/scene_07.png", cv::IMREAD_GRAYSCALE);
+  const rb::ImageResult r = rb::processImage(image, kDefaults);
+  const Json j = Json::parse(rb::resultToJson(r, "scene_07.png"));
+  EXPECT_EQ(j["image"], "scene_07.png");
+  EXPECT_EQ(j["status"], "ok");
+  EXPECT_EQ(j["tags"].size(), 4u);
+  EXPECT_EQ(j["contours_in"], r.contoursIn);
+  EXPECT_DOUBLE_EQ(j["clipped_area"].get<double>(), r.clippedArea);
+  EXPECT_EQ(j["mask_check"]["off_band_mismatches"], 0);
+  ASSERT_TRUE(j["mask_check"].contains("opencv"));
+  // The polygons in the JSON give back the clipped area.
+  roiclip::PolygonSet back;
+  for (const auto& p : j["clipped"]) {
+    roiclip::Polygon poly;
+    poly.outer = pathsFrom(Json::array({p["outer"]}))[0];
+    poly.holes = pathsFrom(p["holes"]);
+    back.polygons.push_back(poly);
+  }
+  EXPECT_NEAR(back.area(), r.clippedArea, 1e-6 * r.clippedArea);
+  EXPECT_EQ(static_cast<int>(j["contours"].size()), r.contoursOut);
+}
+
+}  // namespace
