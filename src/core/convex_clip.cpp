@@ -34,16 +34,16 @@ XPoint crossing(const Vertex& from, IPoint hA, IPoint hB) {
 }
 
 // One Sutherland-Hodgman step: keep the part of the closed path on the left of hA -> hB
-// (points on the line count as inside).
-std::vector<Vertex> clipHalfPlane(const std::vector<Vertex>& in, IPoint hA, IPoint hB) {
-  std::vector<Vertex> out;
+// (points on the line count as inside). Writes into `out` (cleared first).
+void clipHalfPlane(const std::vector<Vertex>& in, IPoint hA, IPoint hB, std::vector<Vertex>& out) {
+  out.clear();
   const std::size_t n = in.size();
-  if (n == 0) return out;
-  std::vector<int> side(n);
-  for (std::size_t i = 0; i < n; ++i) side[i] = orient(hA, hB, in[i].p);
+  if (n == 0) return;
+  const int firstSide = orient(hA, hB, in[0].p);
+  int sp = firstSide;
   for (std::size_t i = 0; i < n; ++i) {
     const Vertex& p = in[i];
-    const int sp = side[i], sq = side[(i + 1) % n];
+    const int sq = i + 1 < n ? orient(hA, hB, in[i + 1].p) : firstSide;
     if (sp >= 0) {
       out.push_back(p);
       if (sq < 0) {
@@ -57,8 +57,8 @@ std::vector<Vertex> clipHalfPlane(const std::vector<Vertex>& in, IPoint hA, IPoi
     } else if (sq > 0) {
       out.push_back({crossing(p, hA, hB), p.lineA, p.lineB});
     }
+    sp = sq;
   }
-  return out;
 }
 
 }  // namespace
@@ -106,15 +106,34 @@ std::vector<ExactEdge> preclipConvex(const std::vector<std::vector<IPoint>>& rin
   if (orientation < 0) std::reverse(clipRing.begin(), clipRing.end());  // inside on the left
 
   std::vector<ExactEdge> out;
-  std::vector<Vertex> path;
+  std::vector<Vertex> path, next;
+  const std::size_t sides = clipRing.size();
   for (const std::vector<IPoint>& ring : rings) {
+    // Rings entirely inside every half-plane pass unchanged; rings entirely outside one of them
+    // wind 0 times around every point of the clip ring and are dropped.
+    bool allInside = true, outsideOne = false;
+    for (std::size_t k = 0; k < sides && !outsideOne; ++k) {
+      const IPoint hA = clipRing[k], hB = clipRing[(k + 1) % sides];
+      bool anyIn = false;
+      for (const IPoint& q : ring) {
+        const int o = orient(hA, hB, q);
+        if (o <= 0) allInside = false;
+        if (o > 0) anyIn = true;
+        if (!allInside && anyIn) break;
+      }
+      if (!anyIn) outsideOne = true;
+    }
+    if (outsideOne) continue;
     path.clear();
     for (std::size_t i = 0; i < ring.size(); ++i) {
       const IPoint a = ring[i], b = ring[(i + 1) % ring.size()];
       path.push_back({XPoint(a), a, b});
     }
-    for (std::size_t k = 0; k < clipRing.size() && !path.empty(); ++k) {
-      path = clipHalfPlane(path, clipRing[k], clipRing[(k + 1) % clipRing.size()]);
+    if (!allInside) {
+      for (std::size_t k = 0; k < sides && !path.empty(); ++k) {
+        clipHalfPlane(path, clipRing[k], clipRing[(k + 1) % sides], next);
+        path.swap(next);
+      }
     }
     for (std::size_t i = 0; i < path.size(); ++i) {
       const Vertex& v = path[i];

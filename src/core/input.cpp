@@ -9,22 +9,27 @@
 namespace roiclip::detail {
 namespace {
 
-std::int64_t snap(double v, double scale, const char* axis, std::size_t pathIndex,
-                  std::size_t vertexIndex, int operand) {
-  const char* which = operand == 0 ? "subject" : "clip";
-  if (!std::isfinite(v)) {
-    throw InvalidInputError(std::string(which) + " path " + std::to_string(pathIndex) +
-                            ", vertex " + std::to_string(vertexIndex) + ": " + axis +
-                            " is not a finite number");
+[[noreturn]] void rejectCoordinate(double v, double scale, const char* axis, std::size_t pathIndex,
+                                   std::size_t vertexIndex, int operand) {
+  const std::string where = std::string(operand == 0 ? "subject" : "clip") + " path " +
+                            std::to_string(pathIndex) + ", vertex " + std::to_string(vertexIndex) +
+                            ": " + axis;
+  if (!std::isfinite(v)) throw InvalidInputError(where + " is not a finite number");
+  throw InvalidInputError(where + " = " + std::to_string(v) + " is outside the supported range +-" +
+                          std::to_string(double(Grid::kMaxUnits) / scale));
+}
+
+// Round to the nearest grid unit, ties to even. Adding and subtracting 1.5 * 2^52 rounds any
+// |u| < 2^51 exactly in the default rounding mode, without a libm call.
+inline std::int64_t snap(double v, double scale, const char* axis, std::size_t pathIndex,
+                         std::size_t vertexIndex, int operand) {
+  const double u = v * scale;
+  if (!(std::fabs(u) <= double(Grid::kMaxUnits))) {  // also NaN and infinity
+    rejectCoordinate(v, scale, axis, pathIndex, vertexIndex, operand);
   }
-  const double units = std::nearbyint(v * scale);
-  if (!(std::fabs(units) <= double(Grid::kMaxUnits))) {
-    throw InvalidInputError(std::string(which) + " path " + std::to_string(pathIndex) +
-                            ", vertex " + std::to_string(vertexIndex) + ": " + axis + " = " +
-                            std::to_string(v) + " is outside the supported range +-" +
-                            std::to_string(double(Grid::kMaxUnits) / scale));
-  }
-  return std::int64_t(units);
+  constexpr double kRound = 6755399441055744.0;  // 1.5 * 2^52
+  // Not algebraically simplified: without -ffast-math the compiler keeps IEEE semantics.
+  return std::int64_t((u + kRound) - kRound);
 }
 
 // True when b lies on the way from a to c, going straight on (exact).

@@ -67,8 +67,17 @@ class Sweep {
       a.lineA = e.lineA;
       a.lineB = e.lineB;
       a.contribution[e.operand] = e.direction;
-      queue_.push({e.left, int(active_.size())});
-      queue_.push({e.right, -1});
+      const int id = int(active_.size());
+      if (e.left.w == 1) {
+        initial_.push_back({{std::int64_t(e.left.x), std::int64_t(e.left.y)}, id, false});
+      } else {
+        queue_.push({e.left, id});
+      }
+      if (e.right.w == 1) {
+        initial_.push_back({{std::int64_t(e.right.x), std::int64_t(e.right.y)}, id, true});
+      } else {
+        queue_.push({e.right, -1});
+      }
       active_.push_back(a);
     }
     std::sort(initial_.begin(), initial_.end(),
