@@ -10,7 +10,7 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 build=${BUILD_DIR:-$root/build-bench}
 reps=${REPETITIONS:-3}
 # Rows that take seconds to minutes per operation: run once, not repeated.
-heavy='Random10k|Contour100k_twisted/clipper'
+heavy='Random10k|Contour100k_twisted/clipper$'
 if [ ! -f "$build/CMakeCache.txt" ]; then
   cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release >&2
 fi

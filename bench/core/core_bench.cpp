@@ -29,7 +29,7 @@
 namespace roiclip::bench {
 namespace {
 
-enum class Library { Roiclip, Clipper, Boost, Geos };
+enum class Library { Roiclip, Clipper, ClipperUnion, Boost, Geos };
 
 const char* libraryName(Library lib) {
   switch (lib) {
@@ -37,6 +37,8 @@ const char* libraryName(Library lib) {
       return "roiclip";
     case Library::Clipper:
       return "clipper";
+    case Library::ClipperUnion:
+      return "clipper_union";
     case Library::Boost:
       return "boost";
     case Library::Geos:
@@ -230,6 +232,27 @@ void benchClipper(benchmark::State& state, Case& c) {
       inspect);
 }
 
+// Simplify with Clipper's plain union, without SimplifyPolygons' StrictlySimple pass: faster, but
+// regions that touch at a vertex stay in one ring (a weaker contract than roiclip's output).
+void benchClipperUnion(benchmark::State& state, Case& c) {
+  const ClipperLib::Paths subject = toClipper(c.subject);
+  const ClipperLib::PolyFillType fill = toClipperFill(c.rule);
+  measure(
+      state, c, Library::ClipperUnion, c.clipperTolerance,
+      [&] {
+        ClipperLib::Clipper clipper;
+        clipper.AddPaths(subject, ClipperLib::ptSubject, true);
+        ClipperLib::Paths out;
+        if (!clipper.Execute(ClipperLib::ctUnion, out, fill, fill)) {
+          throw std::runtime_error("Clipper::Execute failed");
+        }
+        return out;
+      },
+      [](const ClipperLib::Paths& r) {
+        return Outcome{clipperArea(r), r.size()};
+      });
+}
+
 void benchBoost(benchmark::State& state, Case& c) {
   const BoostPolygon subject = toBoost(c.subject);
   const BoostPolygon clipPolygon = toBoost(c.clip);
@@ -297,6 +320,7 @@ void registerCase(Case& c) {
   };
   add(Library::Roiclip, benchRoiclip);
   if (!c.clipperSlow || gIncludeSlow) add(Library::Clipper, benchClipper);
+  if (!c.binary()) add(Library::ClipperUnion, benchClipperUnion);
   if (c.binary() && c.valid) {
     add(Library::Boost, benchBoost);
     add(Library::Geos, benchGeos);
@@ -304,7 +328,8 @@ void registerCase(Case& c) {
 }
 
 void registerAll() {
-  // Simplify: Boost.Geometry and GEOS do not resolve self-intersections, so roiclip vs Clipper.
+  // Simplify: Boost.Geometry and GEOS do not resolve self-intersections, so roiclip vs Clipper
+  // (SimplifyPolygons, and a plain union).
   registerCase(addCase("Simplify/Contour100k_twisted", {twistedContour(100000, 20, 1)}, {},
                        FillRule::NonZero, false, kRoundedCrossingTolerance));
   for (const std::size_t n : {1000, 10000}) {

@@ -8,8 +8,9 @@ import argparse
 import json
 import sys
 
-LIBRARIES = [("roiclip", "roiclip"), ("clipper", "Clipper 1"), ("boost", "Boost.Geometry"),
-             ("geos", "GEOS")]
+LIBRARIES = [("roiclip", "roiclip"), ("clipper", "Clipper 1"),
+             ("clipper_union", "Clipper 1 union (not strictly simple)"),
+             ("boost", "Boost.Geometry"), ("geos", "GEOS")]
 TO_MS = {"ns": 1e-6, "us": 1e-3, "ms": 1.0, "s": 1e3}
 
 
