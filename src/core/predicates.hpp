@@ -14,6 +14,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <utility>
 
 #include <boost/multiprecision/cpp_int.hpp>
 
@@ -33,16 +34,24 @@ struct IPoint {
   }
 };
 
-/// An exact point (X/W, Y/W), W > 0. Grid points have W == 1.
+/// An exact point (X/W, Y/W), W > 0. Grid points have W == 1. The nearest doubles are cached
+/// for the floating-point filters.
 struct XPoint {
   i128 x = 0;
   i128 y = 0;
   i128 w = 1;
+  double fx = 0;
+  double fy = 0;
   XPoint() = default;
-  XPoint(i128 px, i128 py, i128 pw) : x(px), y(py), w(pw) {}
-  explicit XPoint(IPoint p) : x(p.x), y(p.y), w(1) {}
-  [[nodiscard]] double dx() const { return w == 1 ? double(x) : double(x) / double(w); }
-  [[nodiscard]] double dy() const { return w == 1 ? double(y) : double(y) / double(w); }
+  XPoint(i128 px, i128 py, i128 pw)
+      : x(px),
+        y(py),
+        w(pw),
+        fx(pw == 1 ? double(px) : double(px) / double(pw)),
+        fy(pw == 1 ? double(py) : double(py) / double(pw)) {}
+  explicit XPoint(IPoint p) : x(p.x), y(p.y), w(1), fx(double(p.x)), fy(double(p.y)) {}
+  [[nodiscard]] double dx() const { return fx; }
+  [[nodiscard]] double dy() const { return fy; }
 };
 
 inline i256 wide(i128 v) { return i256(v); }
@@ -68,20 +77,34 @@ inline int orient(IPoint a, IPoint b, const XPoint& c) {
                                 std::fabs(uy) * (std::fabs(c.dx()) + std::fabs(double(a.x))) + 1.0);
   if (v > bound) return 1;
   if (v < -bound) return -1;
-  const i256 ex = wide(c.x) - wide(a.x) * wide(c.w);
-  const i256 ey = wide(c.y) - wide(a.y) * wide(c.w);
-  return signOf(wide(b.x - a.x) * ey - wide(b.y - a.y) * ex);
+  // |a| <= 2^30 and W < 2^64, so these fit; only the products below may overflow.
+  const i128 ex = c.x - i128(a.x) * c.w;
+  const i128 ey = c.y - i128(a.y) * c.w;
+  i128 l, r;
+  if (!__builtin_mul_overflow(i128(b.x - a.x), ey, &l) &&
+      !__builtin_mul_overflow(i128(b.y - a.y), ex, &r)) {
+    return (l > r) - (l < r);
+  }
+  return signOf(wide(b.x - a.x) * wide(ey) - wide(b.y - a.y) * wide(ex));
 }
 
 /// Exact lexicographic comparison (x first, then y): -1, 0, +1.
 [[gnu::noinline]] inline int compareCoord(i128 a, i128 aw, i128 b, i128 bw) {
   if (aw == bw) return (a > b) - (a < b);
-  const double da = double(a) / double(aw), db = double(b) / double(bw);
+  i128 l, r;
+  if (!__builtin_mul_overflow(a, bw, &l) && !__builtin_mul_overflow(b, aw, &r)) {
+    return (l > r) - (l < r);
+  }
+  const i256 lw = wide(a) * wide(bw), rw = wide(b) * wide(aw);
+  return (lw > rw) - (lw < rw);
+}
+
+// da, db: the cached doubles of a / aw and b / bw (relative error below 2^-51).
+inline int compareCoordFiltered(i128 a, i128 aw, double da, i128 b, i128 bw, double db) {
   const double bound = 1e-14 * (std::fabs(da) + std::fabs(db));
   if (da - db > bound) return 1;
   if (db - da > bound) return -1;
-  const i256 l = wide(a) * wide(bw), r = wide(b) * wide(aw);
-  return (l > r) - (l < r);
+  return compareCoord(a, aw, b, bw);
 }
 
 inline int compare(const XPoint& a, const XPoint& b) {
@@ -89,8 +112,8 @@ inline int compare(const XPoint& a, const XPoint& b) {
     if (a.x != b.x) return a.x < b.x ? -1 : 1;
     return (a.y > b.y) - (a.y < b.y);
   }
-  const int cx = compareCoord(a.x, a.w, b.x, b.w);
-  return cx != 0 ? cx : compareCoord(a.y, a.w, b.y, b.w);
+  const int cx = compareCoordFiltered(a.x, a.w, a.fx, b.x, b.w, b.fx);
+  return cx != 0 ? cx : compareCoordFiltered(a.y, a.w, a.fy, b.y, b.w, b.fy);
 }
 inline bool equal(const XPoint& a, const XPoint& b) { return compare(a, b) == 0; }
 inline bool less(const XPoint& a, const XPoint& b) { return compare(a, b) < 0; }
@@ -99,20 +122,24 @@ inline bool less(const XPoint& a, const XPoint& b) { return compare(a, b) < 0; }
 /// from d1.
 inline int crossSign(IPoint d1, IPoint d2) { return signOf(i128(d1.x) * d2.y - i128(d1.y) * d2.x); }
 
-inline i128 absI(i128 v) { return v < 0 ? -v : v; }
-inline i128 gcdI(i128 a, i128 b) {
-  a = absI(a);
-  b = absI(b);
-  while (b != 0) {
-    const i128 t = a % b;
-    a = b;
-    b = t;
-  }
-  return a;
+inline std::uint64_t gcd64(std::uint64_t a, std::uint64_t b) {
+  if (a == 0) return b;
+  if (b == 0) return a;
+  const int shift = __builtin_ctzll(a | b);
+  a >>= __builtin_ctzll(a);
+  do {
+    b >>= __builtin_ctzll(b);
+    if (a > b) std::swap(a, b);
+    b -= a;
+  } while (b != 0);
+  return a << shift;
 }
 
+inline std::uint64_t magnitude(i128 v) { return std::uint64_t(v < 0 ? -v : v); }
+
 /// Crossing point of the lines through grid segments (a, b) and (c, d). Returns false when the
-/// lines are parallel. The result is reduced, so crossings on the grid come back with W == 1.
+/// lines are parallel. The result is fully reduced, so crossings on the grid come back with
+/// W == 1.
 inline bool lineIntersection(IPoint a, IPoint b, IPoint c, IPoint d, XPoint& out) {
   const i128 d1x = b.x - a.x, d1y = b.y - a.y, d2x = d.x - c.x, d2y = d.y - c.y;
   i128 den = d1x * d2y - d1y * d2x;
@@ -122,19 +149,20 @@ inline bool lineIntersection(IPoint a, IPoint b, IPoint c, IPoint d, XPoint& out
     den = -den;
     num = -num;
   }
-  // Reduce t = num / den first: keeps X, Y small and gives W == 1 for grid crossings.
-  const i128 g = gcdI(num, den);
+  // |den|, |num| < 2^64 (coordinates within 2^30). Reduce t = num / den; then, with
+  // gcd(num, den) = 1, gcd(X, Y, den) = gcd(gcd(d1x, d1y), den): both 64-bit gcds.
+  const std::uint64_t g = gcd64(magnitude(num), magnitude(den));
   if (g > 1) {
-    num /= g;
-    den /= g;
+    num /= i128(g);
+    den /= i128(g);
   }
+  const std::uint64_t g2 = gcd64(gcd64(magnitude(d1x), magnitude(d1y)), magnitude(den));
   i128 x = i128(a.x) * den + d1x * num;
   i128 y = i128(a.y) * den + d1y * num;
-  const i128 g2 = gcdI(gcdI(x, y), den);
   if (g2 > 1) {
-    x /= g2;
-    y /= g2;
-    den /= g2;
+    x /= i128(g2);
+    y /= i128(g2);
+    den /= i128(g2);
   }
   out = XPoint(x, y, den);
   return true;
