@@ -550,7 +550,7 @@ std::string resultToJson(const ImageResult& r, const std::string& imageName,
   j["seconds"] = {{"detect", r.seconds.detect},     {"roi", r.seconds.roi},
                   {"contours", r.seconds.contours}, {"clip", r.seconds.clip},
                   {"check", r.seconds.check},       {"total", r.seconds.total}};
-  return j.dump(1) + "\n";
+  return j.dump() + "\n";  // compact: polygons with thousands of vertices
 }
 
 }  // namespace roiclip::batch

@@ -1,8 +1,12 @@
 // roiclip::batch::run() and `roiclip run`: the bundled images end to end, resumability,
 // interruption, recursion, and every failure path (corrupt file, empty folder, no tags, missing
 // id, unwritable output folder) with the documented exit codes.
+#include <fcntl.h>
 #include <sys/wait.h>
 #include <unistd.h>
+
+#include <csignal>
+#include <thread>
 
 #include <atomic>
 #include <chrono>
@@ -372,11 +376,67 @@ TEST(BatchCli, ExitCodes) {
   EXPECT_EQ(cli("run " + in + out + " --config '" + (t / "bad.json").string() + "'", t), 2);
 
   EXPECT_EQ(cli("run --help", t), 0);
+  EXPECT_EQ(cli("--help", t), 0);
+  EXPECT_NE(readText(t / "stdout.txt").find("run"), std::string::npos);
+  EXPECT_EQ(cli("run --help", t), 0);
   const std::string help = readText(t / "stdout.txt");
   for (const char* needle : {"Exit codes", "--roi", "board:inspection", "--jobs", "--force",
                              "--recursive", "--config", "130"}) {
     EXPECT_NE(help.find(needle), std::string::npos) << needle;
   }
+}
+
+// Ctrl-C: SIGINT after the first image. The run stops taking images, writes the summary of
+// what it finished, exits 130 and leaves no partial or temporary files; a second run finishes.
+TEST(BatchCli, CtrlCThenResume) {
+  const TempDir tmp("sigint");
+  const fs::path t = tmp.path();
+  for (int i = 0; i < 6; ++i)
+    copyScene("scene_0" + std::to_string(i + 1), t / "in" / ("s" + std::to_string(i) + ".png"));
+  const std::string errFile = (t / "stderr.txt").string();
+  const pid_t pid = ::fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    const int fd = ::open(errFile.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    ::dup2(fd, STDERR_FILENO);
+    const std::string in = (t / "in").string();
+    const std::string out = (t / "out").string();
+    ::execl(ROICLIP_CLI, ROICLIP_CLI, "run", in.c_str(), "-o", out.c_str(), "--jobs", "1",
+            static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (readText(errFile).find("[1/6]") == std::string::npos &&
+         std::chrono::steady_clock::now() < deadline) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  ::kill(pid, SIGINT);
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 130) << readText(errFile);
+  const fs::path out = t / "out";
+  EXPECT_EQ(hiddenFiles(out), 0);
+  const Json summary = readJson(out / "summary.json");
+  EXPECT_EQ(summary["interrupted"], true);
+  const std::size_t finished = summary["images"].size();
+  EXPECT_GE(finished, 1u);
+  EXPECT_LT(finished, 6u);
+  int jsons = 0;
+  for (const auto& e : fs::directory_iterator(out)) {
+    const std::string f = e.path().filename().string();
+    if (f.size() > 5 && f.compare(f.size() - 5, 5, ".json") == 0 && f != "summary.json") {
+      EXPECT_EQ(readJson(e.path())["status"], "ok") << f;  // every file there is complete
+      EXPECT_TRUE(fs::exists(out / (e.path().stem().string() + ".overlay.png"))) << f;
+      ++jsons;
+    }
+  }
+  EXPECT_EQ(static_cast<std::size_t>(jsons), finished);
+
+  EXPECT_EQ(cli("run '" + (t / "in").string() + "' -o '" + out.string() + "'", t), 0);
+  const Json resumed = readJson(out / "summary.json");
+  EXPECT_EQ(resumed["ok"], 6);
+  EXPECT_EQ(resumed["skipped"].get<std::size_t>(), finished);
 }
 #endif
 
