@@ -6,8 +6,9 @@
 //   of two input segments, represented exactly in homogeneous form (X/W, Y/W) with
 //   |X|,|Y| < 2^96 and 0 < W < 2^64 (__int128).
 // - Predicates (orientation, lexicographic order, direction order) are exact: a double filter
-//   with a conservative error bound answers most calls; the rest are computed exactly with
-//   256-bit integers (Boost.Multiprecision). There is no epsilon in any topological decision.
+//   with a conservative error bound answers most calls; the rest are computed exactly in
+//   128-bit integers, and where a product can exceed 128 bits (comparing two crossings' x or y)
+//   in 256-bit integers (Boost.Multiprecision). There is no epsilon in any topological decision.
 // - Every edge piece keeps the integer input segment it lies on ("supporting segment"), so
 //   intersections are always computed from integer data and the bit sizes above never grow.
 #pragma once
@@ -17,6 +18,8 @@
 #include <utility>
 
 #include <boost/multiprecision/cpp_int.hpp>
+
+#include <roiclip/error.hpp>
 
 namespace roiclip::detail {
 
@@ -77,15 +80,16 @@ inline int orient(IPoint a, IPoint b, const XPoint& c) {
                                 std::fabs(uy) * (std::fabs(c.dx()) + std::fabs(double(a.x))) + 1.0);
   if (v > bound) return 1;
   if (v < -bound) return -1;
-  // |a| <= 2^30 and W < 2^64, so these fit; only the products below may overflow.
+  // Exact in 128 bits: |X|, |Y| < 3 * 2^93 and |a * W| <= 2^93, so |ex|, |ey| < 2^95.4, and
+  // with |b - a| <= 2^31 each product stays below 2^126.4. The check guards that reasoning.
   const i128 ex = c.x - i128(a.x) * c.w;
   const i128 ey = c.y - i128(a.y) * c.w;
   i128 l, r;
-  if (!__builtin_mul_overflow(i128(b.x - a.x), ey, &l) &&
-      !__builtin_mul_overflow(i128(b.y - a.y), ex, &r)) {
-    return (l > r) - (l < r);
+  if (__builtin_mul_overflow(i128(b.x - a.x), ey, &l) ||
+      __builtin_mul_overflow(i128(b.y - a.y), ex, &r)) {
+    throw InternalError("orient: coordinate bound violated");
   }
-  return signOf(wide(b.x - a.x) * wide(ey) - wide(b.y - a.y) * wide(ex));
+  return (l > r) - (l < r);
 }
 
 /// Exact lexicographic comparison (x first, then y): -1, 0, +1.

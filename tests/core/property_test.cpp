@@ -144,3 +144,46 @@ INSTANTIATE_TEST_SUITE_P(Kinds, ClipProperty, ::testing::Range(0, kKinds));
 
 }  // namespace
 }  // namespace roiclip
+
+namespace roiclip {
+namespace {
+
+// Coordinates at the edge of the supported range (|v| * 256 close to 2^30), on the 1/256 px
+// grid: products in the predicates overflow 128 bits and take the exact 256-bit fallback.
+TEST(ExtremeCoordinates, MatchWindingOracleAndSlabArea) {
+  std::mt19937 rng(4242);
+  const double limit = double(Grid::kMaxUnits) / 256.0;  // 4,194,304 px
+  std::uniform_int_distribution<std::int64_t> unit(-Grid::kMaxUnits, Grid::kMaxUnits);
+  int checked = 0;
+  for (int iter = 0; iter < 60; ++iter) {
+    Paths input(1 + iter % 2);
+    for (Path& p : input) {
+      for (int i = 0; i < 5 + iter % 7; ++i) {
+        p.emplace_back(double(unit(rng)) / 256.0, double(unit(rng)) / 256.0);
+      }
+    }
+    for (FillRule rule : {FillRule::EvenOdd, FillRule::NonZero, FillRule::Positive}) {
+      const PolygonSet result = simplify(input, rule);
+      const auto report = sampleRegion(
+          result, {&input}, [&](const std::vector<long long>& w) { return isFilled(rule, w[0]); },
+          -limit, limit, 100, unsigned(iter));
+      ASSERT_EQ(report.mismatches, 0) << report.firstMismatch << " " << describe(input);
+      const double truth = testing::slabArea(
+          {&input}, [&](const std::vector<long long>& w) { return isFilled(rule, w[0]); });
+      ASSERT_NEAR(result.area(), truth, 1e-7 * truth + 1.0) << describe(input);
+      checked += report.checked;
+    }
+    const Paths quad = {
+        {{-limit, -limit / 3}, {limit / 2, -limit}, {limit, limit}, {-limit / 4, limit / 2}}};
+    const PolygonSet general = clip(ClipOp::Xor, input, quad, FillRule::EvenOdd, FillRule::EvenOdd);
+    const auto report = sampleRegion(
+        general, {&input, &quad},
+        [&](const std::vector<long long>& w) { return ((w[0] & 1) != 0) != ((w[1] & 1) != 0); },
+        -limit, limit, 100, unsigned(iter) + 1000u);
+    ASSERT_EQ(report.mismatches, 0) << report.firstMismatch << " " << describe(input);
+  }
+  EXPECT_GT(checked, 10000);
+}
+
+}  // namespace
+}  // namespace roiclip

@@ -217,3 +217,30 @@ TEST(Simplify, ThousandNestedSquaresFormAParentChain) {
 
 }  // namespace
 }  // namespace roiclip
+
+namespace roiclip {
+namespace {
+
+// Long steep edges at the edge of the coordinate range cross a vertical edge: the crossings
+// share their x exactly and have large denominators, so ordering them needs products beyond
+// 128 bits (the 256-bit branch of the exact comparison).
+TEST(Simplify, CrossingsSharingXAtRangeEdge) {
+  const double m = 4194300.0;
+  const Paths in = {{{1000.5, -m}, {1000.5, m}, {1001.25, m}, {1001.25, -m}},
+                    {{-m, -m + 3.0 / 256}, {m, m - 7.0 / 256}, {m, -m + 5.0 / 256}},
+                    {{-m + 11.0 / 256, m}, {m - 1.0 / 256, -m + 13.0 / 256}, {-m, -m}}};
+  for (FillRule rule : {FillRule::EvenOdd, FillRule::NonZero}) {
+    const PolygonSet r = simplify(in, rule);
+    const double truth = testing::slabArea(
+        {&in}, [&](const std::vector<long long>& w) { return isFilled(rule, w[0]); });
+    EXPECT_NEAR(r.area(), truth, 1e-7 * truth);
+    const auto report = testing::sampleRegion(
+        r, {&in}, [&](const std::vector<long long>& w) { return isFilled(rule, w[0]); }, 990, 1010,
+        400, 3u);
+    EXPECT_EQ(report.mismatches, 0) << report.firstMismatch;
+    EXPECT_GT(report.checked, 300);
+  }
+}
+
+}  // namespace
+}  // namespace roiclip
