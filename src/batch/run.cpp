@@ -183,10 +183,10 @@ class Runner {
         options_.jobs > 0 ? options_.jobs : static_cast<int>(std::thread::hardware_concurrency());
     workers = std::max(1, std::min<int>(workers, static_cast<int>(std::max<std::size_t>(n, 1))));
 
-    // Set up every worker's pipeline first: bad options fail before any file is touched.
-    std::vector<Processor> processors;
-    processors.reserve(static_cast<std::size_t>(workers));
-    for (int w = 0; w < workers; ++w) processors.emplace_back(options_.process);
+    // The first worker's pipeline is set up here, so bad options fail before any file is
+    // touched; the others set up theirs in their own thread (building a tag family's decode
+    // table takes a good part of a second).
+    const Processor first(options_.process);
 
     std::vector<std::optional<ImageRecord>> records(n);
     std::atomic<std::size_t> next{0};
@@ -226,11 +226,23 @@ class Runner {
     const int cvThreads = cv::getNumThreads();
     if (workers > 1) cv::setNumThreads(1);
     if (workers == 1) {
-      work(processors[0]);
+      work(first);
     } else {
       std::vector<std::thread> threads;
-      for (int w = 0; w < workers; ++w) {
-        threads.emplace_back(work, std::cref(processors[static_cast<std::size_t>(w)]));
+      threads.emplace_back(work, std::cref(first));
+      for (int w = 1; w < workers; ++w) {
+        threads.emplace_back([&] {
+          std::optional<Processor> own;
+          try {
+            own.emplace(options_.process);
+          } catch (...) {
+            const std::lock_guard<std::mutex> lock(mutex);
+            if (!fatal) fatal = std::current_exception();
+            stop = true;
+            return;
+          }
+          work(*own);
+        });
       }
       for (auto& t : threads) t.join();
     }
