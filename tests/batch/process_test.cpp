@@ -160,6 +160,24 @@ TEST_P(BatchScene, DefaultHullContainsEveryTagCorner) {
   const cv::Mat overlay = rb::renderOverlay(image, r);
   EXPECT_EQ(overlay.size(), image.size());
   EXPECT_EQ(overlay.type(), CV_8UC3);
+  // Outside the ROI the overlay is the image dimmed; far inside, away from any region, it is
+  // the image itself (the caption bar covers the top 22 rows).
+  cv::Mat roiMask = cv::Mat::zeros(image.size(), CV_8U);
+  std::vector<cv::Point> hullInt;
+  for (const auto& p : hull) hullInt.emplace_back(cvRound(p.x), cvRound(p.y));
+  cv::fillConvexPoly(roiMask, hullInt, 255);
+  cv::Mat near;
+  cv::dilate(roiMask, near, cv::Mat(), {-1, -1}, 4);
+  int dimmedChecked = 0;
+  for (int y = 30; y < image.rows; y += 7) {
+    for (int x = 0; x < image.cols; x += 7) {
+      if (near.at<uchar>(y, x) != 0) continue;
+      const int original = image.at<uchar>(y, x);
+      EXPECT_NEAR(overlay.at<cv::Vec3b>(y, x)[1], 0.35 * original, 1.0) << x << "," << y;
+      ++dimmedChecked;
+    }
+  }
+  EXPECT_GT(dimmedChecked, 100);
   const cv::Mat mask = rb::renderMask(r);
   EXPECT_EQ(mask.size(), image.size());
   EXPECT_NEAR(cv::countNonZero(mask), r.clippedArea, 0.1 * r.clippedArea);

@@ -308,6 +308,32 @@ TEST(BatchRun, RecursiveMirrorsFoldersInsideTheOutput) {
   EXPECT_EQ(rb::run(nested).total, 6u);
 }
 
+TEST(BatchRun, ReadsSixteenBitAndColourFiles) {
+  const TempDir tmp("types");
+  const fs::path in = tmp.path() / "in";
+  fs::create_directories(in);
+  const cv::Mat gray = cv::imread((kImages / "scene_05.png").string(), cv::IMREAD_GRAYSCALE);
+  cv::Mat gray16, bgr;
+  gray.convertTo(gray16, CV_16U, 257.0);
+  cv::cvtColor(gray, bgr, cv::COLOR_GRAY2BGR);
+  ASSERT_TRUE(cv::imwrite((in / "g16.tif").string(), gray16));
+  ASSERT_TRUE(cv::imwrite((in / "g16.png").string(), gray16));
+  ASSERT_TRUE(cv::imwrite((in / "colour.jpg").string(), bgr));
+  ASSERT_TRUE(cv::imwrite((in / "colour.bmp").string(), bgr));
+  ASSERT_EQ(cv::imread((in / "g16.tif").string(), cv::IMREAD_UNCHANGED).depth(), CV_16U);
+  const rb::RunSummary s = rb::run(optionsFor(in, tmp.path() / "out"));
+  ASSERT_EQ(s.total, 4u);
+  EXPECT_EQ(s.ok, 4u);
+  for (const auto& r : s.images) {
+    EXPECT_EQ(r.tagsFound, 4) << r.image;
+    EXPECT_EQ(r.offBandMismatches, 0) << r.image;
+    EXPECT_EQ(cv::imread((tmp.path() / "out" / (r.name + ".overlay.png")).string()).size(),
+              gray.size());
+  }
+  // 16-bit scaled back to 8 bits exactly: the same figures as the 8-bit colour BMP.
+  EXPECT_DOUBLE_EQ(s.images[0].clippedArea, s.images[2].clippedArea);  // colour.bmp, g16.png
+}
+
 TEST(BatchRun, OutputNamesCannotEscape) {
   EXPECT_EQ(rb::outputName("a/b/c.png"), "a/b/c");
   EXPECT_EQ(rb::outputName("c.tar.png"), "c.tar");
