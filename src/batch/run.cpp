@@ -432,7 +432,10 @@ void writeFileAtomic(const fs::path& file, const std::string& bytes) {
 
 RunSummary run(const BatchOptions& options, const ProgressCallback& progress,
                const std::atomic<bool>* cancel) {
-  std::vector<fs::path> images = findImages(options.input, options.recursive);
+  // "in/" lists "in/x.png", which is not relative to "in/" element by element: drop the slash.
+  fs::path input = options.input;
+  while (!input.has_filename() && input.has_relative_path()) input = input.parent_path();
+  std::vector<fs::path> images = findImages(input, options.recursive);
   std::error_code ec;
   fs::create_directories(options.output, ec);
   if (ec || !fs::is_directory(options.output)) {
@@ -441,7 +444,7 @@ RunSummary run(const BatchOptions& options, const ProgressCallback& progress,
   }
   // An output folder inside the input folder must not feed our own overlays back in.
   const fs::path outCanon = fs::weakly_canonical(options.output);
-  const fs::path inCanon = fs::weakly_canonical(options.input);
+  const fs::path inCanon = fs::weakly_canonical(input);
   const auto isOurOutput = [&](const fs::path& p) {
     if (outCanon != inCanon) return isUnder(fs::weakly_canonical(p), outCanon);
     const std::string f = lower(p.filename().string());
@@ -457,7 +460,9 @@ RunSummary run(const BatchOptions& options, const ProgressCallback& progress,
   for (const auto& p : images) {
     Job j;
     j.image = p;
-    const fs::path rel = fs::weakly_canonical(p).lexically_relative(inCanon);
+    // Relative to the folder as listed, symlinks not resolved: a link to a file elsewhere still
+    // gets its name inside the output folder.
+    const fs::path rel = p.lexically_relative(input);
     j.rel = rel.generic_string();
     j.name = outputName(rel, false);
     ++stems[j.name];

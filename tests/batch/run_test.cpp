@@ -301,6 +301,23 @@ TEST(BatchRun, RecursiveMirrorsFoldersInsideTheOutput) {
   }
   EXPECT_EQ(readJson(tmp.path() / "deep" / "b" / "c" / "y.json")["image"], "b/c/y.jpg");
 
+  // Links: a linked file is an image of this folder (its output stays inside the output
+  // folder); a linked folder is not followed (it could loop or lead anywhere).
+  copyScene("scene_08", tmp.path() / "elsewhere" / "far.png");
+  fs::create_directory_symlink(tmp.path() / "elsewhere", in / "linked_dir");
+  fs::create_symlink(tmp.path() / "elsewhere" / "far.png", in / "a" / "link.png");
+  rb::BatchOptions links = optionsFor(in.string() + "/", tmp.path() / "links");  // trailing '/'
+  links.recursive = true;
+  const rb::RunSummary linked = rb::run(links);
+  EXPECT_EQ(linked.total, 7u);
+  EXPECT_EQ(linked.ok, 7u);
+  EXPECT_TRUE(fs::exists(tmp.path() / "links" / "a" / "link.json"));
+  EXPECT_TRUE(fs::exists(tmp.path() / "links" / "top.json"));
+  EXPECT_FALSE(fs::exists(tmp.path() / "links" / "linked_dir"));
+  EXPECT_FALSE(fs::exists(tmp.path() / "elsewhere" / "far.json"));
+  fs::remove(in / "linked_dir");
+  fs::remove(in / "a" / "link.png");
+
   // An output folder inside the input folder is not read back as input.
   rb::BatchOptions nested = optionsFor(in, in / "out");
   nested.recursive = true;
