@@ -11,10 +11,9 @@ namespace {
 
 PolygonSet resolve(const std::vector<InputEdge>& edges, const std::vector<ExactEdge>& exactEdges,
                    const Combination& how, const Grid& grid) {
-  const Arrangement arrangement = splitEdges(edges, exactEdges);
-  const std::vector<Side> sides = classifyPieces(arrangement, how);
-  const Contours contours = traceContours(arrangement, sides);
-  return buildNesting(arrangement, sides, contours, grid);
+  const Arrangement arrangement = splitEdges(edges, exactEdges, how);  // stages 1 and 2
+  const Contours contours = traceContours(arrangement);
+  return buildNesting(arrangement, contours, grid);
 }
 
 // Intersection with one convex ring: pre-clip the other operand to it, then resolve that alone.

@@ -28,15 +28,12 @@ bool Combination::inside(const Windings& w) const {
   return false;
 }
 
-std::vector<Side> classifyPieces(const Arrangement& arrangement, const Combination& combination) {
-  std::vector<Side> sides(arrangement.pieces.size(), Side::None);
-  for (std::size_t i = 0; i < arrangement.pieces.size(); ++i) {
-    const EdgePiece& piece = arrangement.pieces[i];
-    const bool below = combination.inside(piece.windBelow);
-    const bool above = combination.inside(piece.windAbove());
-    if (below != above) sides[i] = above ? Side::Above : Side::Below;
-  }
-  return sides;
+Side classifyPiece(const Windings& below, const Windings& contribution,
+                   const Combination& combination) {
+  const bool in = combination.inside(below);
+  const bool above = combination.inside({below[0] + contribution[0], below[1] + contribution[1]});
+  if (in == above) return Side::None;
+  return above ? Side::Above : Side::Below;
 }
 
 }  // namespace roiclip::detail

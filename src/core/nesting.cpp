@@ -1,9 +1,9 @@
 // Stage 4: nesting. Each hole gets its outer ring, each outer ring the hole it lies in.
 //
-// The sweep recorded, for every piece, the piece directly below its left end. Following that
-// chain down to the first result piece finds the ring that bounds the region just below a
-// ring's lowest-leftmost piece; whether that ring is an outer ring or a hole, and whether the
-// region is filled, says who owns the ring. No point-in-polygon tests: O(n) after the sweep.
+// The sweep recorded, for every result piece, the nearest result piece below its left end. For
+// a ring's lowest-leftmost piece, that piece belongs to the ring bounding the region just
+// below; whether that ring is an outer ring or a hole, and whether the region is filled, says
+// who owns the ring. No point-in-polygon tests: linear after the sweep.
 #include <algorithm>
 #include <numeric>
 
@@ -13,17 +13,10 @@
 
 namespace roiclip::detail {
 
-PolygonSet buildNesting(const Arrangement& arrangement, const std::vector<Side>& sides,
-                        const Contours& contours, const Grid& grid) {
+PolygonSet buildNesting(const Arrangement& arrangement, const Contours& contours,
+                        const Grid& grid) {
   const auto& pieces = arrangement.pieces;
   const auto& rings = contours.rings;
-
-  // Nearest result piece below each piece (below indices are always smaller).
-  std::vector<int> resultBelow(pieces.size(), -1);
-  for (std::size_t i = 0; i < pieces.size(); ++i) {
-    const int b = pieces[i].below;
-    if (b >= 0) resultBelow[i] = sides[b] != Side::None ? b : resultBelow[b];
-  }
 
   std::vector<int> order(rings.size());
   std::iota(order.begin(), order.end(), 0);
@@ -51,7 +44,7 @@ PolygonSet buildNesting(const Arrangement& arrangement, const std::vector<Side>&
 
   for (int r : order) {
     const TracedRing& ring = rings[r];
-    const int b = resultBelow[ring.referencePiece];
+    const int b = pieces[ring.referencePiece].below;
     const int below = b >= 0 ? contours.ringOfPiece[b] : -1;
     if (below < 0) {
       if (ring.hole) throw InternalError("buildNesting: hole with nothing below it");

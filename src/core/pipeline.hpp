@@ -37,35 +37,6 @@ struct ExactEdge {
 void appendInputEdges(const Paths& paths, int operand, const Grid& grid,
                       std::vector<InputEdge>& out);
 
-/// A piece of the planar arrangement: a maximal part of one or more coincident input edges
-/// that no other edge crosses or touches except at its two ends.
-struct EdgePiece {
-  int left = -1;        ///< vertex id of the lexicographically smaller end
-  int right = -1;       ///< vertex id of the other end
-  IPoint lineA, lineB;  ///< the grid segment it lies on (lineA < lineB)
-  /// Change of each operand's winding number from the side below the piece to the side above
-  /// (the sum of the directions of the coincident input edges).
-  Windings contribution{};
-  Windings windBelow{};  ///< winding numbers just below the piece
-  int below = -1;        ///< the piece directly below this one at its left end, or -1
-  [[nodiscard]] Windings windAbove() const {
-    return {windBelow[0] + contribution[0], windBelow[1] + contribution[1]};
-  }
-};
-
-/// The planar arrangement of all input edges: vertices in lexicographic order, pieces in the
-/// order the sweep met them (so a piece's `below` always has a smaller index).
-struct Arrangement {
-  std::vector<XPoint> vertices;
-  std::vector<EdgePiece> pieces;
-};
-
-/// Stage 1 (split_edges.cpp): sweep line over all edges. Finds every crossing, touching vertex
-/// and collinear overlap, splits edges there, merges coincident pieces and labels every piece
-/// with the winding numbers on both sides. O((n + k) log n) for n edges and k crossings.
-Arrangement splitEdges(const std::vector<InputEdge>& edges,
-                       const std::vector<ExactEdge>& exactEdges = {});
-
 /// Which side of a piece is filled in the result.
 enum class Side : std::uint8_t { None = 0, Above = 1, Below = 2 };
 
@@ -78,10 +49,45 @@ struct Combination {
   [[nodiscard]] bool inside(const Windings& w) const;
 };
 
-/// Stage 2 (classify.cpp): the fill rule and operation decide, from the winding numbers on both
-/// sides, which pieces bound the result and on which side it lies. Pieces between regions of
-/// equal fill status are dropped here (the paper's "delete edges inside holes").
-std::vector<Side> classifyPieces(const Arrangement& arrangement, const Combination& combination);
+/// Stage 2 (classify.cpp): from the winding numbers just below a piece and its contribution,
+/// the fill rules and the operation decide whether the piece bounds the result and on which
+/// side the result lies. Pieces between regions of equal status (the paper's "edges inside
+/// holes") get Side::None and are not kept.
+Side classifyPiece(const Windings& below, const Windings& contribution,
+                   const Combination& combination);
+
+/// A piece of the planar arrangement: a maximal part of one or more coincident input edges
+/// that no other edge crosses or touches except at its two ends.
+struct EdgePiece {
+  int left = -1;        ///< vertex id of the lexicographically smaller end
+  int right = -1;       ///< vertex id of the other end
+  IPoint lineA, lineB;  ///< the grid segment it lies on (lineA < lineB)
+  /// Change of each operand's winding number from the side below the piece to the side above
+  /// (the sum of the directions of the coincident input edges).
+  Windings contribution{};
+  Windings windBelow{};  ///< winding numbers just below the piece
+  int below = -1;        ///< the nearest result piece below this one at its left end, or -1
+  [[nodiscard]] Windings windAbove() const {
+    return {windBelow[0] + contribution[0], windBelow[1] + contribution[1]};
+  }
+};
+
+/// The result pieces of the planar arrangement of all input edges, in the order the sweep met
+/// them (so a piece's `below` always has a smaller index), with the vertices they use in
+/// lexicographic order. Pieces that do not bound the result are never stored, so memory is
+/// linear in input plus output.
+struct Arrangement {
+  std::vector<XPoint> vertices;
+  std::vector<EdgePiece> pieces;
+  std::vector<Side> sides;  ///< filled side of each piece (never Side::None)
+};
+
+/// Stage 1 (split_edges.cpp): sweep line over all edges. Finds every crossing, touching vertex
+/// and collinear overlap, splits edges there, merges coincident pieces, labels every piece
+/// with the winding numbers on both sides and keeps the ones stage 2 classifies as result
+/// boundary. O((n + k) log n) time for n edges and k crossings.
+Arrangement splitEdges(const std::vector<InputEdge>& edges,
+                       const std::vector<ExactEdge>& exactEdges, const Combination& combination);
 
 /// A closed ring traced from result pieces, filled on its left.
 struct TracedRing {
@@ -97,7 +103,7 @@ struct Contours {
   std::vector<TracedRing> rings;
   std::vector<int> ringOfPiece;  ///< ring index of each result piece, -1 for the others
 };
-Contours traceContours(const Arrangement& arrangement, const std::vector<Side>& sides);
+Contours traceContours(const Arrangement& arrangement);
 
 /// Snap one operand's paths to the grid as closed rings of grid points (repeats and straight
 /// runs removed); rings with fewer than 2 points are dropped.
@@ -115,8 +121,7 @@ std::vector<ExactEdge> preclipConvex(const std::vector<std::vector<IPoint>>& rin
 
 /// Stage 4 (nesting.cpp): give each hole its outer ring and each outer ring the hole it lies
 /// in, and emit the polygons in image coordinates with roiclip's output orientation.
-PolygonSet buildNesting(const Arrangement& arrangement, const std::vector<Side>& sides,
-                        const Contours& contours, const Grid& grid);
+PolygonSet buildNesting(const Arrangement& arrangement, const Contours& contours, const Grid& grid);
 
 /// The general path (every operation, no convex shortcut): stages 0 to 4.
 PolygonSet booleanGeneral(const Paths& subject, const Paths* clipPaths, const Combination& how,

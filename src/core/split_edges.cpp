@@ -26,7 +26,9 @@ struct Active {
   IPoint lineA, lineB;
   Windings contribution{};
   Windings windBelow{};
-  int slot = -1;  // index of the output piece while this piece is in the status
+  int slot = -1;         // index of its output piece (result pieces only) while in the status
+  int resultBelow = -1;  // nearest result piece below it when it was inserted
+  [[nodiscard]] int nearestResult() const { return slot >= 0 ? slot : resultBelow; }
   [[nodiscard]] IPoint direction() const { return {lineB.x - lineA.x, lineB.y - lineA.y}; }
 };
 
@@ -41,8 +43,9 @@ struct EventAfter {
 
 class Sweep {
  public:
-  Sweep(const std::vector<InputEdge>& edges, const std::vector<ExactEdge>& exactEdges)
-      : status_(StatusLess{&active_}) {
+  Sweep(const std::vector<InputEdge>& edges, const std::vector<ExactEdge>& exactEdges,
+        const Combination& how)
+      : how_(how), status_(StatusLess{&active_}) {
     const std::size_t total = edges.size() + exactEdges.size();
     active_.reserve(total);
     where_.resize(total);
@@ -82,8 +85,8 @@ class Sweep {
     }
     std::sort(initial_.begin(), initial_.end(),
               [](const InitialEvent& a, const InitialEvent& b) { return a.point < b.point; });
-    out_.pieces.reserve(total + total / 4);
-    out_.vertices.reserve(total + 16);
+    out_.pieces.reserve(total / 4 + 16);
+    out_.vertices.reserve(total / 4 + 16);
   }
 
   Arrangement run() {
@@ -146,9 +149,18 @@ class Sweep {
     return true;
   }
 
+  // The vertex id of the current event point, stored on first use: only vertices of result
+  // pieces are kept. Ids still follow the sweep order, i.e. lexicographic order.
+  int vertexHere(const XPoint& p) {
+    if (vertex_ < 0) {
+      vertex_ = int(out_.vertices.size());
+      out_.vertices.push_back(p);
+    }
+    return vertex_;
+  }
+
   void visit(const XPoint& p) {
-    const int vertex = int(out_.vertices.size());
-    out_.vertices.push_back(p);
+    vertex_ = -1;
     starts_.clear();
     int ending = -1;  // a piece known to end at p, if any: its status node locates p
     while (cursor_ < initial_.size() && equal(XPoint(initial_[cursor_].point), p)) {
@@ -185,7 +197,7 @@ class Sweep {
     for (int id : through_) {
       Active& a = active_[id];
       inStatus_[id] = 0;
-      out_.pieces[a.slot].right = vertex;
+      if (a.slot >= 0) out_.pieces[a.slot].right = vertexHere(p);
       if (!equal(a.right, p)) {
         a.left = p;
         starts_.push_back(id);
@@ -199,23 +211,30 @@ class Sweep {
     const bool reuse = through_.size() == 1 && starts_.size() == 1;
     if (!reuse) status_.erase(lo, hi);
 
-    // Insert bottom to top, labelling winding numbers from the piece below.
+    // Insert bottom to top, labelling winding numbers from the piece below; keep only the
+    // pieces that bound the result (stage 2, classify, decides).
     Windings wind = belowPiece >= 0 ? windAbove(active_[belowPiece]) : Windings{};
-    int belowSlot = belowPiece >= 0 ? active_[belowPiece].slot : -1;
+    int resultBelow = belowPiece >= 0 ? active_[belowPiece].nearestResult() : -1;
     for (int id : starts_) {
       Active& a = active_[id];
       a.windBelow = wind;
-      a.slot = int(out_.pieces.size());
-      EdgePiece piece;
-      piece.left = vertex;
-      piece.lineA = a.lineA;
-      piece.lineB = a.lineB;
-      piece.contribution = a.contribution;
-      piece.windBelow = wind;
-      piece.below = belowSlot;
-      out_.pieces.push_back(piece);
+      a.resultBelow = resultBelow;
+      a.slot = -1;
+      const Side side = classifyPiece(wind, a.contribution, how_);
+      if (side != Side::None) {
+        a.slot = int(out_.pieces.size());
+        EdgePiece piece;
+        piece.left = vertexHere(p);
+        piece.lineA = a.lineA;
+        piece.lineB = a.lineB;
+        piece.contribution = a.contribution;
+        piece.windBelow = wind;
+        piece.below = resultBelow;
+        out_.pieces.push_back(piece);
+        out_.sides.push_back(side);
+      }
       wind = windAbove(a);
-      belowSlot = a.slot;
+      resultBelow = a.nearestResult();
       if (reuse) {
         const_cast<int&>(*lo) = id;  // same position in the order, see above
         where_[id] = lo;
@@ -294,6 +313,8 @@ class Sweep {
     queue_.push({x, -1});
   }
 
+  const Combination& how_;
+  int vertex_ = -1;
   std::vector<Active> active_;
   std::vector<InitialEvent> initial_;
   std::size_t cursor_ = 0;
@@ -309,8 +330,8 @@ class Sweep {
 }  // namespace
 
 Arrangement splitEdges(const std::vector<InputEdge>& edges,
-                       const std::vector<ExactEdge>& exactEdges) {
-  return Sweep(edges, exactEdges).run();
+                       const std::vector<ExactEdge>& exactEdges, const Combination& how) {
+  return Sweep(edges, exactEdges, how).run();
 }
 
 }  // namespace roiclip::detail

@@ -16,7 +16,8 @@ IPoint direction(const EdgePiece& p) { return {p.lineB.x - p.lineA.x, p.lineB.y 
 
 }  // namespace
 
-Contours traceContours(const Arrangement& arrangement, const std::vector<Side>& sides) {
+Contours traceContours(const Arrangement& arrangement) {
+  const auto& sides = arrangement.sides;
   const auto& pieces = arrangement.pieces;
   const int vertexCount = int(arrangement.vertices.size());
   auto from = [&](int e) { return sides[e] == Side::Above ? pieces[e].left : pieces[e].right; };
