@@ -446,7 +446,10 @@ RunSummary run(const BatchOptions& options, const ProgressCallback& progress,
   const fs::path outCanon = fs::weakly_canonical(options.output);
   const fs::path inCanon = fs::weakly_canonical(input);
   const auto isOurOutput = [&](const fs::path& p) {
-    if (outCanon != inCanon) return isUnder(fs::weakly_canonical(p), outCanon);
+    if (outCanon != inCanon) {
+      // Only an output folder inside the input folder can hold outputs we would list.
+      return isUnder(outCanon, inCanon) && isUnder(fs::weakly_canonical(p), outCanon);
+    }
     const std::string f = lower(p.filename().string());
     const auto endsWith = [&f](const std::string& s) {
       return f.size() >= s.size() && f.compare(f.size() - s.size(), s.size(), s) == 0;

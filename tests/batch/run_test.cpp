@@ -323,6 +323,11 @@ TEST(BatchRun, RecursiveMirrorsFoldersInsideTheOutput) {
   nested.recursive = true;
   EXPECT_EQ(rb::run(nested).total, 6u);
   EXPECT_EQ(rb::run(nested).total, 6u);
+  // ... while an output folder that contains the input folder takes nothing away.
+  fs::remove_all(in / "out");
+  rb::BatchOptions outer = optionsFor(in, tmp.path());
+  outer.recursive = true;
+  EXPECT_EQ(rb::run(outer).total, 6u);
 }
 
 TEST(BatchRun, ReadsSixteenBitAndColourFiles) {
