@@ -1,7 +1,7 @@
 // roiclip_bench: roiclip against Clipper 1, Boost.Geometry and GEOS on the same inputs in one
-// run. Each benchmark first runs its operation once untimed to (a) count heap use and (b) check
-// that its output area agrees with roiclip's; a large disagreement is a correctness signal and
-// marks the benchmark with an error (and saves the input when --dump_dir is given).
+// run. The first iteration of each benchmark also (a) counts heap use and (b) checks, with the
+// timer paused, that its output area agrees with roiclip's; a large disagreement is a correctness
+// signal and marks the benchmark with an error (and saves the input when --dump_dir is given).
 //
 // Extra flags (taken out before Google Benchmark parses the rest):
 //   --dump_dir=DIR   write every input on which roiclip throws or disagrees with another library
