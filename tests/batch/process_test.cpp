@@ -12,6 +12,7 @@
 
 #include <roiclip/batch/process.hpp>
 #include <roiclip/batch/run.hpp>
+#include <roiclip/opencv/rasterize.hpp>
 
 namespace rb = roiclip::batch;
 using Json = nlohmann::json;
@@ -88,6 +89,7 @@ class BatchScene : public ::testing::TestWithParam<std::string> {};
 // Measured on the eight scenes: the measured area is 0.14 to 0.30 px * perimeter short.
 constexpr double kPerimeterTolerance = 0.5;
 constexpr double kRelativeTolerance = 0.01;
+constexpr double kTruthBand = 1.0;
 
 TEST_P(BatchScene, BoardRoiAreasMatchGroundTruth) {
   const std::string scene = GetParam();
@@ -119,6 +121,18 @@ TEST_P(BatchScene, BoardRoiAreasMatchGroundTruth) {
               << " px2, truth " << expected.area() << " px2, diff "
               << r.clippedArea - expected.area() << ", tolerance " << tolerance << ", perimeter "
               << perimeter(expected) << "\n";
+    // Pixel by pixel: the clipped region agrees with the true one everywhere farther than
+    // kTruthBand px from a true shape edge, a true ROI edge or the fitted ROI's edge (blur,
+    // threshold and tracing through pixel centres move boundaries by up to about a pixel).
+    roiclip::Paths edges = truth.shapes;
+    const roiclip::Paths trueRoi = truthRoi(truth, roiName);
+    edges.insert(edges.end(), trueRoi.begin(), trueRoi.end());
+    edges.insert(edges.end(), r.roi.begin(), r.roi.end());
+    const cv::Size size(image.cols, image.rows);
+    const roiclip::opencv::MaskComparison vsTruth = roiclip::opencv::compareMasks(
+        roiclip::opencv::rasterize(expected, size), rb::renderMask(r), kTruthBand, edges);
+    EXPECT_TRUE(vsTruth.agreesOffBand()) << scene << " " << roiName << ": " << vsTruth;
+    std::cout << "[ figures  ] " << scene << " " << roiName << " vs truth: " << vsTruth << "\n";
     const roiclip::PolygonSet roiTruth =
         roiclip::simplify(truthRoi(truth, roiName), roiclip::FillRule::EvenOdd);
     // Fitted board ROI within 0.17 px of the truth (images/README.md): area within 0.5 px * P.
