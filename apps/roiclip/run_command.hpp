@@ -95,6 +95,7 @@ class RunCommand {
     cmd_->add_flag("-r,--recursive", recursive_, "descend into sub-folders (mirrored in output)");
     cmd_->add_flag("-f,--force", force_, "reprocess images whose outputs are up to date");
     cmd_->add_flag("--masks", masks_, "also write NAME.mask.png");
+    cmd_->add_flag("--edges", edges_, "also clip Canny edges as open polylines (in NAME.json)");
     cmd_->add_flag("--no-report", noReport_, "do not write report.html");
     cmd_->add_flag("-q,--quiet", quiet_, "no progress output");
   }
@@ -153,6 +154,7 @@ class RunCommand {
       p.contours.polarity = batch::parsePolarity(polarity_);
       p.contours.approxEpsilon = approx_;
       p.contours.minArea = minArea_;
+      p.contours.openEdges = edges_;
       p.subjectFillRule = roiclip::parseFillRule(fillRule_.c_str());
       p.roiFillRule = roiclip::parseFillRule(roiFillRule_.c_str());
     } catch (const roiclip::InvalidInputError& e) {
@@ -241,6 +243,7 @@ class RunCommand {
   bool recursive_ = false;
   bool force_ = false;
   bool masks_ = false;
+  bool edges_ = false;
   bool noReport_ = false;
   bool quiet_ = false;
 };

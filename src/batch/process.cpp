@@ -244,7 +244,8 @@ struct Processor::Impl {
       return;
     }
     r.roi = roi.value();
-    r.roiArea = simplify(r.roi, options.roiFillRule, options.grid).area();
+    const PolygonSet roiRegion = simplify(r.roi, options.roiFillRule, options.grid);
+    r.roiArea = roiRegion.area();
 
     t = Clock::now();
     std::vector<int> indices;
@@ -269,6 +270,24 @@ struct Processor::Impl {
       r.contours.push_back(std::move(c));
     }
     r.contoursIn = static_cast<int>(r.contours.size());
+    if (options.contours.openEdges) {
+      cv::Mat edgeImage;
+      cv::Canny(gray, edgeImage, options.contours.cannyLow, options.contours.cannyHigh);
+      std::vector<Path> lines = traceEdges(edgeImage);
+      if (options.contours.approxEpsilon > 0) {
+        for (Path& line : lines) {
+          std::vector<cv::Point2d> in;
+          std::vector<cv::Point2d> approx;
+          for (const Point& p : line) in.emplace_back(p.x, p.y);
+          cv::approxPolyDP(in, approx, options.contours.approxEpsilon, false);
+          line.clear();
+          for (const auto& p : approx) line.emplace_back(p.x, p.y);
+        }
+      }
+      r.edgesIn = static_cast<int>(lines.size());
+      r.edges = clipPolylines(lines, roiRegion);
+      r.edgeLength = polylineLength(r.edges);
+    }
     r.seconds.clip = secondsSince(t);
 
     t = Clock::now();
@@ -398,6 +417,15 @@ cv::Mat renderOverlay(const cv::Mat& image, const ImageResult& result) {
                              1, cv::LINE_AA);
     }
   }
+  for (const Path& line : result.edges) {
+    std::vector<cv::Point> pts;
+    for (const Point& p : line) {
+      pts.emplace_back(static_cast<int>(std::lround(p.x * (1 << shift))),
+                       static_cast<int>(std::lround(p.y * (1 << shift))));
+    }
+    cv::polylines(out, std::vector<std::vector<cv::Point>>{pts}, false, cv::Scalar(255, 0, 255), 1,
+                  cv::LINE_AA, shift);
+  }
   if (!result.roi.empty()) {
     const opencv::FixedPointContours roi = opencv::toFixedPointContours(result.roi, shift);
     cv::polylines(out, roi.contours.contours, true, cv::Scalar(0, 230, 255), 2, cv::LINE_AA,
@@ -493,8 +521,8 @@ std::string optionsKey(const RunOptions& o) {
      << ";polarity=" << static_cast<int>(c.polarity) << ";threshold=" << c.threshold
      << ";block=" << c.adaptiveBlock << ";c=" << c.adaptiveC << ";canny=" << c.cannyLow << ","
      << c.cannyHigh << ";approx=" << c.approxEpsilon << ";min_area=" << c.minArea
-     << ";fill=" << toString(o.subjectFillRule) << ";roi_fill=" << toString(o.roiFillRule)
-     << ";grid=" << o.grid.scale;
+     << ";edges=" << c.openEdges << ";fill=" << toString(o.subjectFillRule)
+     << ";roi_fill=" << toString(o.roiFillRule) << ";grid=" << o.grid.scale;
   return os.str();
 }
 
@@ -543,6 +571,12 @@ std::string resultToJson(const ImageResult& r, const std::string& imageName,
                         {"polygons", polygonSetJson(c.clipped)}});
   }
   j["contours"] = std::move(contours);
+  if (!r.edges.empty() || r.edgesIn > 0) {
+    j["edges"] = {{"traced", r.edgesIn},
+                  {"clipped", r.edges.size()},
+                  {"length", r.edgeLength},
+                  {"polylines", pathsJson(r.edges)}};
+  }
   Json check = {{"exact", comparisonJson(r.vectorVsRaster)},
                 {"off_band_mismatches", r.offBandMismatches()}};
   if (r.vectorVsOpenCv) check["opencv"] = comparisonJson(*r.vectorVsOpenCv);

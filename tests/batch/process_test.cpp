@@ -343,3 +343,80 @@ TEST(BatchJson, ResultJsonHasEveryFigure) {
 }
 
 }  // namespace
+
+// --- open polylines (Canny edges) ------------------------------------------------------------
+
+namespace {
+
+TEST(BatchEdges, ClipPolylinesAgainstSquareWithHole) {
+  // Square [0,10]^2 with the hole [4,6]^2, as roiclip orients them (outer negative).
+  const roiclip::PolygonSet region =
+      roiclip::simplify({{{0, 0}, {0, 10}, {10, 10}, {10, 0}}, {{4, 4}, {6, 4}, {6, 6}, {4, 6}}},
+                        roiclip::FillRule::EvenOdd);
+  ASSERT_EQ(region.polygons.size(), 1u);
+  ASSERT_EQ(region.polygons[0].holes.size(), 1u);
+  const std::vector<roiclip::Path> lines = {
+      {{-5, 5}, {15, 5}},          // crosses the square and the hole: 4 + 4 inside
+      {{-5, 1}, {5, 1}, {5, -3}},  // enters, turns, leaves: 5 + 1
+      {{20, 20}, {30, 30}},        // outside
+      {{2, 2}}};                   // one point: skipped
+  const std::vector<roiclip::Path> inside = rb::clipPolylines(lines, region);
+  EXPECT_EQ(inside.size(), 3u);
+  EXPECT_NEAR(rb::polylineLength(inside), 4 + 4 + 5 + 1, 1e-9);
+  for (const auto& line : inside) {
+    for (const auto& p : line) {
+      EXPECT_TRUE(p.x >= 0 && p.x <= 10 && p.y >= 0 && p.y <= 10);
+      EXPECT_FALSE(p.x > 4 && p.x < 6 && p.y > 4 && p.y < 6);
+    }
+  }
+}
+
+TEST(BatchEdges, TraceEdgesFollowsChainsAndLoops) {
+  cv::Mat edges = cv::Mat::zeros(60, 80, CV_8U);
+  cv::line(edges, {5, 5}, {40, 20}, 255, 1, cv::LINE_8);  // an open chain
+  cv::circle(edges, {60, 40}, 10, 255, 1, cv::LINE_8);    // a closed loop
+  edges.at<uchar>(55, 5) = 255;                           // a single pixel
+  const std::vector<roiclip::Path> lines = rb::traceEdges(edges);
+  ASSERT_EQ(lines.size(), 3u);
+  std::size_t pixels = 0;
+  for (const auto& l : lines) pixels += l.size();
+  // Every edge pixel once, plus the loop's closing point.
+  EXPECT_EQ(pixels, static_cast<std::size_t>(cv::countNonZero(edges)) + 1);
+  const auto& chain = lines[0];
+  EXPECT_EQ(chain.front(), roiclip::Point(5, 5));
+  EXPECT_EQ(chain.back(), roiclip::Point(40, 20));
+  for (std::size_t i = 1; i < chain.size(); ++i) {  // 8-connected steps
+    EXPECT_LE(std::abs(chain[i].x - chain[i - 1].x), 1.0);
+    EXPECT_LE(std::abs(chain[i].y - chain[i - 1].y), 1.0);
+  }
+  EXPECT_EQ(lines[1].front(), lines[1].back());  // the loop is closed
+  EXPECT_NEAR(rb::polylineLength({lines[1]}), 2 * CV_PI * 10, 0.15 * 2 * CV_PI * 10);
+}
+
+TEST(BatchEdges, SceneEdgesAreClippedToTheRoi) {
+  const cv::Mat image = cv::imread(kImages + "/scene_01.png", cv::IMREAD_GRAYSCALE);
+  rb::RunOptions options;
+  options.roi = "board:window";
+  options.boardFile = kImages + "/board.json";
+  options.contours.openEdges = true;
+  const rb::ImageResult r = rb::processImage(image, options);
+  ASSERT_EQ(r.status, rb::Status::Ok) << r.reason;
+  EXPECT_GT(r.edgesIn, 0);
+  ASSERT_FALSE(r.edges.empty());
+  std::vector<cv::Point2f> roi;
+  for (const auto& p : r.roi[0]) roi.emplace_back(static_cast<float>(p.x), static_cast<float>(p.y));
+  for (const auto& line : r.edges) {
+    for (const auto& p : line) {
+      EXPECT_GE(cv::pointPolygonTest(
+                    roi, cv::Point2f(static_cast<float>(p.x), static_cast<float>(p.y)), true),
+                -1e-3);
+    }
+  }
+  // The window holds the figure-eight stroke and the frame: their edges are most of the
+  // clipped length, at least the window-clipped contour perimeter's order of magnitude.
+  EXPECT_GT(r.edgeLength, 100.0);
+  const Json j = Json::parse(rb::resultToJson(r, "scene_01.png"));
+  EXPECT_DOUBLE_EQ(j["edges"]["length"].get<double>(), r.edgeLength);
+}
+
+}  // namespace

@@ -52,6 +52,9 @@ struct ContourOptions {
   double approxEpsilon = 0.0;
   /// Outer contours whose |cv::contourArea| is below this (px^2) are dropped with their holes.
   double minArea = 0.0;
+  /// Also trace the Canny edges (cannyLow, cannyHigh) as open polylines and clip them to the ROI
+  /// (ImageResult::edges). Independent of `method`.
+  bool openEdges = false;
 };
 
 /// Parse "otsu", "adaptive", "canny" or "threshold:T" (T in 0..255) into options.method (and
@@ -122,6 +125,11 @@ struct ImageResult {
   /// Sum of the per-contour clipped areas; equals clippedArea (contours never overlap) up to
   /// rounding of output vertices; kept as a consistency figure.
   double contourClippedAreaSum = 0;
+  /// With ContourOptions::openEdges: the parts of the Canny edge polylines inside the ROI
+  /// (ROI read under roiFillRule), and their total length in px.
+  std::vector<Path> edges;
+  double edgeLength = 0;
+  int edgesIn = 0;                                       ///< polylines traced before clipping
   opencv::MaskComparison vectorVsRaster;                 ///< exact raster route
   std::optional<opencv::MaskComparison> vectorVsOpenCv;  ///< cv::fillPoly route (even-odd only)
   StageTimes seconds;
@@ -146,6 +154,19 @@ cv::Mat readImage(const std::string& path);
 ///         indices in the findContours output.
 std::vector<Paths> detectContours(const cv::Mat& gray, const ContourOptions& options,
                                   std::vector<int>* indices = nullptr);
+
+/// Trace a binary edge image (non-zero = edge, CV_8UC1, e.g. cv::Canny output) into open
+/// polylines through the pixel centres: 8-connected chains, each pixel used once, starting at
+/// chain ends (pixels with one neighbour) and then on closed loops. A branch ends one chain and
+/// starts another. Single pixels give one-point polylines.
+std::vector<Path> traceEdges(const cv::Mat& edges);
+
+/// The parts of open polylines inside a region (Boost.Geometry linestring/polygon intersection;
+/// the region's boundary counts as inside). Polylines with fewer than 2 points are skipped.
+std::vector<Path> clipPolylines(const std::vector<Path>& polylines, const PolygonSet& region);
+
+/// Total length of open polylines (px).
+double polylineLength(const std::vector<Path>& polylines);
 
 /// A prepared pipeline: the tag detector and the board file are set up once and reused for
 /// many images. Not thread-safe; give each thread its own Processor.

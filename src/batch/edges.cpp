@@ -1,0 +1,137 @@
+// Open polylines: Canny edges traced into chains and clipped to the ROI with Boost.Geometry.
+// The core clips closed regions only; for open polylines Boost.Geometry's linestring/polygon
+// intersection does the job (floating point, which is enough for drawing and measuring edges).
+#include <array>
+#include <cmath>
+
+#include <boost/geometry.hpp>
+#include <boost/geometry/geometries/linestring.hpp>
+#include <boost/geometry/geometries/multi_linestring.hpp>
+#include <boost/geometry/geometries/point_xy.hpp>
+#include <boost/geometry/geometries/polygon.hpp>
+#include <opencv2/core.hpp>
+
+#include <roiclip/batch/process.hpp>
+
+namespace roiclip::batch {
+
+namespace {
+
+namespace bg = boost::geometry;
+using BPoint = bg::model::d2::point_xy<double>;
+// Clockwise (negative shoelace sum) outer rings, open rings: exactly roiclip's output rings.
+using BPolygon = bg::model::polygon<BPoint, true, false>;
+using BLine = bg::model::linestring<BPoint>;
+using BLines = bg::model::multi_linestring<BLine>;
+
+// 4-neighbours first, so chains follow straight steps before diagonal ones.
+constexpr std::array<std::array<int, 2>, 8> kSteps = {
+    {{1, 0}, {0, 1}, {-1, 0}, {0, -1}, {1, 1}, {-1, 1}, {-1, -1}, {1, -1}}};
+
+}  // namespace
+
+std::vector<Path> traceEdges(const cv::Mat& edges) {
+  if (edges.empty()) return {};
+  if (edges.type() != CV_8UC1) throw InvalidInputError("traceEdges: need a CV_8UC1 edge image");
+  const int w = edges.cols;
+  const int h = edges.rows;
+  cv::Mat visited = cv::Mat::zeros(edges.size(), CV_8U);
+  const auto free = [&](int x, int y) {
+    return x >= 0 && y >= 0 && x < w && y < h && edges.at<uchar>(y, x) != 0 &&
+           visited.at<uchar>(y, x) == 0;
+  };
+  const auto isEdge = [&](int x, int y) {
+    return x >= 0 && y >= 0 && x < w && y < h && edges.at<uchar>(y, x) != 0;
+  };
+  // Follow unvisited neighbours from (x, y) (already in `path`) until none is left.
+  const auto follow = [&](int x, int y, Path& path) {
+    for (;;) {
+      bool moved = false;
+      for (const auto& s : kSteps) {
+        if (free(x + s[0], y + s[1])) {
+          x += s[0];
+          y += s[1];
+          visited.at<uchar>(y, x) = 1;
+          path.emplace_back(x, y);
+          moved = true;
+          break;
+        }
+      }
+      if (!moved) return;
+    }
+  };
+  std::vector<Path> out;
+  const auto traceFrom = [&](int x, int y) {
+    visited.at<uchar>(y, x) = 1;
+    Path forward{{x, y}};
+    follow(x, y, forward);
+    Path backward{{x, y}};
+    follow(x, y, backward);  // a start in the middle of a chain: the other direction
+    Path path(backward.rbegin(), backward.rend());
+    path.insert(path.end(), forward.begin() + 1, forward.end());
+    // A closed loop comes back next to its start: close it.
+    const Point first = path.front();
+    const Point last = path.back();
+    if (path.size() > 3 && std::abs(first.x - last.x) <= 1 && std::abs(first.y - last.y) <= 1) {
+      path.push_back(first);
+    }
+    out.push_back(std::move(path));
+  };
+  // Chain ends first (exactly one edge neighbour), then whatever is left (loops, branches).
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) {
+      if (!free(x, y)) continue;
+      int neighbours = 0;
+      for (const auto& s : kSteps) neighbours += isEdge(x + s[0], y + s[1]) ? 1 : 0;
+      if (neighbours == 1) traceFrom(x, y);
+    }
+  }
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) {
+      if (free(x, y)) traceFrom(x, y);
+    }
+  }
+  return out;
+}
+
+std::vector<Path> clipPolylines(const std::vector<Path>& polylines, const PolygonSet& region) {
+  std::vector<BPolygon> polygons;
+  for (const Polygon& poly : region.polygons) {
+    BPolygon bp;
+    for (const Point& p : poly.outer) bp.outer().emplace_back(p.x, p.y);
+    for (const Path& hole : poly.holes) {
+      bp.inners().emplace_back();
+      for (const Point& p : hole) bp.inners().back().emplace_back(p.x, p.y);
+    }
+    polygons.push_back(std::move(bp));
+  }
+  std::vector<Path> out;
+  for (const Path& line : polylines) {
+    if (line.size() < 2) continue;
+    BLine bl;
+    for (const Point& p : line) bl.emplace_back(p.x, p.y);
+    for (const BPolygon& poly : polygons) {
+      BLines parts;
+      bg::intersection(bl, poly, parts);
+      for (const BLine& part : parts) {
+        if (part.size() < 2) continue;
+        Path path;
+        for (const BPoint& p : part) path.emplace_back(p.x(), p.y());
+        out.push_back(std::move(path));
+      }
+    }
+  }
+  return out;
+}
+
+double polylineLength(const std::vector<Path>& polylines) {
+  double total = 0;
+  for (const Path& line : polylines) {
+    for (std::size_t i = 1; i < line.size(); ++i) {
+      total += std::hypot(line[i].x - line[i - 1].x, line[i].y - line[i - 1].y);
+    }
+  }
+  return total;
+}
+
+}  // namespace roiclip::batch
