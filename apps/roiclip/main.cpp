@@ -136,6 +136,7 @@ int main(int argc, char** argv) {
     // Options from --config go in front of the command line's own, so the command line wins.
     const std::vector<std::string> args = RunCommand::withConfig(argc, argv);
     std::vector<const char*> argvWithConfig;
+    argvWithConfig.reserve(args.size());
     for (const auto& a : args) argvWithConfig.push_back(a.c_str());
     app.parse(static_cast<int>(argvWithConfig.size()), argvWithConfig.data());
 #else

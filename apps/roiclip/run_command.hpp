@@ -35,7 +35,8 @@ ROI mask) off a boundary band. Writes into the output folder, each file atomical
   NAME.overlay.png    image dimmed outside the ROI, ROI outline, clipped regions, tag ids
   NAME.mask.png       clipped region as a mask (with --masks)
   summary.csv, summary.json, report.html   one row per image / overlays to look through
-Images whose outputs are complete and newer than the image are skipped (use --force).
+Images whose outputs are complete, newer than the image and made with the same options are
+skipped (use --force to redo them).
 
 ROI specs (--roi):
   hull                convex hull of all detected tags (default)
