@@ -82,10 +82,17 @@ std::optional<ImageRecord> readRecord(const fs::path& jsonFile, const std::strin
   if (j.is_discarded() || !j.is_object()) return std::nullopt;
   try {
     ImageRecord r;
-    if (j.at("status").get<std::string>() != "ok") return std::nullopt;
+    // ok and no-roi are final for these options; failed images (perhaps a file still being
+    // copied) and mask mismatches are tried again.
+    const std::string status = j.at("status").get<std::string>();
+    if (status != "ok" && status != "no-roi") return std::nullopt;
     if (j.value("options", std::string()) != key) return std::nullopt;  // other options
-    r.status = Status::Ok;
-    r.failure = FailureKind::None;
+    r.status = status == "ok" ? Status::Ok : Status::NoRoi;
+    const std::string failure = j.at("failure").get<std::string>();
+    r.failure = failure == "none"      ? FailureKind::None
+                : failure == "no-tags" ? FailureKind::NoTags
+                                       : FailureKind::MissingTags;
+    r.reason = j.at("reason").get<std::string>();
     r.width = j.at("width").get<int>();
     r.height = j.at("height").get<int>();
     r.tagsFound = static_cast<int>(j.at("tags").size());

@@ -252,6 +252,12 @@ TEST(BatchRun, NoTagsAndMissingIdAreNoRoi) {
   EXPECT_EQ(j["missing_tags"]["missing"], Json::array({9}));
   // The overlay still shows what was found (tags), at the image's size.
   EXPECT_EQ(cv::imread((tmp.path() / "out" / "blank.overlay.png").string()).size(), blank.size());
+  // no-roi is a final answer for these options: skipped on the next run, reason kept.
+  const rb::RunSummary again = rb::run(options);
+  EXPECT_EQ(again.skipped, 2u);
+  EXPECT_EQ(again.noRoi, 2u);
+  EXPECT_EQ(again.images[1].failure, rb::FailureKind::MissingTags);
+  EXPECT_EQ(again.images[1].reason, s.images[1].reason);
 }
 
 TEST(BatchRun, EmptyFolderWritesAnEmptySummary) {

@@ -100,8 +100,9 @@ void writeFileAtomic(const std::filesystem::path& file, const std::string& bytes
 
 /// Process every image of options.input into options.output, `jobs` at a time, each worker
 /// holding one image at a time (memory is bounded by jobs x one image). Per-image failures are
-/// recorded and the run carries on. Images whose NAME.json (status ok) and NAME.overlay.png
-/// (and NAME.mask.png when asked) are newer than the image are skipped unless options.force.
+/// recorded and the run carries on. Images whose NAME.json (status ok or no-roi, made with the
+/// same optionsKey()) and NAME.overlay.png (and NAME.mask.png when asked) are newer than the
+/// image are skipped unless options.force; failed and mask-mismatch images are always redone.
 /// When `cancel` becomes true, no new image is started; images in flight finish (their files
 /// are complete or absent), then the summary of what was done is written and
 /// RunSummary::interrupted is set.
