@@ -26,8 +26,9 @@ struct Active {
   IPoint lineA, lineB;
   Windings contribution{};
   Windings windBelow{};
-  int slot = -1;         // index of its output piece (result pieces only) while in the status
-  int resultBelow = -1;  // nearest result piece below it when it was inserted
+  int slot = -1;          // index of its output piece (result pieces only) while in the status
+  int resultBelow = -1;   // nearest result piece below it when it was inserted
+  int checkedAbove = -1;  // the last piece above it tested for a crossing (see checkCrossing)
   [[nodiscard]] int nearestResult() const { return slot >= 0 ? slot : resultBelow; }
   [[nodiscard]] IPoint direction() const { return {lineB.x - lineA.x, lineB.y - lineA.y}; }
 };
@@ -291,8 +292,14 @@ class Sweep {
 
   void checkCrossing(int a, int b, const XPoint& p) {
     if (a < 0 || b < 0) return;
-    const Active& pa = active_[a];
+    Active& pa = active_[a];
     const Active& pb = active_[b];
+    // A piece keeps its supporting segment and right end when it is cut, so a pair's crossing
+    // never changes: testing the same pair again can only find the same event.
+    if (pa.checkedAbove == b) return;
+    pa.checkedAbove = b;
+    // Two pieces leaving the same point (right after their crossing) cannot cross again.
+    if (equal(pa.left, pb.left)) return;
     // Cheap exact rejection on the integer supporting segments before the rational crossing.
     if (std::max(pa.lineA.x, pb.lineA.x) > std::min(pa.lineB.x, pb.lineB.x)) return;
     if (std::max(std::min(pa.lineA.y, pa.lineB.y), std::min(pb.lineA.y, pb.lineB.y)) >
