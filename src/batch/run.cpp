@@ -1,6 +1,7 @@
 // `roiclip run`: a folder of images through the per-image pipeline, in parallel, resumable.
 #include <roiclip/batch/run.hpp>
 
+#include <signal.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -437,6 +438,32 @@ void writeFileAtomic(const fs::path& file, const std::string& bytes) {
   }
 }
 
+std::size_t removeStaleTemporaries(const fs::path& output) {
+  std::size_t removed = 0;
+  std::error_code ec;
+  for (fs::recursive_directory_iterator it(output, ec), end; !ec && it != end; it.increment(ec)) {
+    const std::string f = it->path().filename().string();
+    // ".NAME.tmp.PID.N", as writeFileAtomic names them.
+    const std::size_t tmp = f.rfind(".tmp.");
+    if (f.empty() || f[0] != '.' || tmp == std::string::npos) continue;
+    const std::string rest = f.substr(tmp + 5);
+    const std::size_t dot = rest.find('.');
+    if (dot == std::string::npos || dot == 0) continue;
+    const std::string pidText = rest.substr(0, dot);
+    if (pidText.find_first_not_of("0123456789") != std::string::npos ||
+        rest.substr(dot + 1).find_first_not_of("0123456789") != std::string::npos ||
+        pidText.size() > 9) {
+      continue;
+    }
+    const auto pid = static_cast<pid_t>(std::stol(pidText));
+    // A live process (another run into the same folder) still owns its temporaries.
+    if (pid == ::getpid() || ::kill(pid, 0) == 0 || errno != ESRCH) continue;
+    std::error_code rm;
+    if (fs::remove(it->path(), rm)) ++removed;
+  }
+  return removed;
+}
+
 RunSummary run(const BatchOptions& options, const ProgressCallback& progress,
                const std::atomic<bool>* cancel) {
   // "in/" lists "in/x.png", which is not relative to "in/" element by element: drop the slash.
@@ -449,6 +476,8 @@ RunSummary run(const BatchOptions& options, const ProgressCallback& progress,
     throw Error("cannot create output folder " + options.output.string() +
                 (ec ? ": " + ec.message() : ""));
   }
+  // A run killed hard (second Ctrl-C, SIGKILL) can leave hidden temporaries; never final files.
+  removeStaleTemporaries(options.output);
   // An output folder inside the input folder must not feed our own overlays back in.
   const fs::path outCanon = fs::weakly_canonical(options.output);
   const fs::path inCanon = fs::weakly_canonical(input);

@@ -362,6 +362,26 @@ TEST(BatchRun, ReadsSixteenBitAndColourFiles) {
   EXPECT_DOUBLE_EQ(s.images[0].clippedArea, s.images[2].clippedArea);  // colour.bmp, g16.png
 }
 
+TEST(BatchRun, StaleTemporariesOfDeadRunsAreRemoved) {
+  const TempDir tmp("stale");
+  fs::create_directories(tmp.path() / "sub");
+  // A pid that has surely exited: a child we waited for.
+  const pid_t dead = ::fork();
+  if (dead == 0) ::_exit(0);
+  ::waitpid(dead, nullptr, 0);
+  const std::string deadTmp = ".a.json.tmp." + std::to_string(dead) + ".3";
+  const std::string liveTmp = ".b.json.tmp." + std::to_string(::getppid()) + ".0";
+  for (const std::string& f :
+       {deadTmp, liveTmp, std::string(".c.tmp.x.1"), std::string("d.json.tmp.1.1")}) {
+    std::ofstream(tmp.path() / "sub" / f) << "partial";
+  }
+  EXPECT_EQ(rb::removeStaleTemporaries(tmp.path()), 1u);
+  EXPECT_FALSE(fs::exists(tmp.path() / "sub" / deadTmp));
+  EXPECT_TRUE(fs::exists(tmp.path() / "sub" / liveTmp));  // its process still runs
+  EXPECT_TRUE(fs::exists(tmp.path() / "sub" / ".c.tmp.x.1"));
+  EXPECT_TRUE(fs::exists(tmp.path() / "sub" / "d.json.tmp.1.1"));
+}
+
 TEST(BatchRun, OutputNamesCannotEscape) {
   EXPECT_EQ(rb::outputName("a/b/c.png"), "a/b/c");
   EXPECT_EQ(rb::outputName("c.tar.png"), "c.tar");

@@ -98,6 +98,11 @@ std::string outputName(const std::filesystem::path& relative, bool keepExtension
 /// @throws Error naming the file if it cannot be written.
 void writeFileAtomic(const std::filesystem::path& file, const std::string& bytes);
 
+/// Remove the hidden temporary files writeFileAtomic() leaves when a process is killed before
+/// its rename (".NAME.tmp.PID.N" anywhere under `output` whose PID no longer runs).
+/// run() calls it first. @return how many were removed.
+std::size_t removeStaleTemporaries(const std::filesystem::path& output);
+
 /// Process every image of options.input into options.output, `jobs` at a time, each worker
 /// holding one image at a time (memory is bounded by jobs x one image). Per-image failures are
 /// recorded and the run carries on. Images whose NAME.json (status ok or no-roi, made with the
