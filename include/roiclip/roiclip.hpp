@@ -37,6 +37,27 @@ PolygonSet subtract(const Paths& subject, const Paths& clip, FillRule rule = Fil
 PolygonSet symmetricDifference(const Paths& subject, const Paths& clip,
                                FillRule rule = FillRule::EvenOdd, const Grid& grid = {});
 
+/// Which parts of open polylines clipLines() returns.
+enum class LinePart {
+  Inside,   ///< the parts in the region, including parts running along its boundary
+  Outside,  ///< the parts outside it: together with Inside, every polyline exactly once
+};
+
+/// Open polylines (Canny edges, lane lines) clipped to a region: the parts of each polyline
+/// inside (or outside) the region { p : regionRule(w_region(p)) }, as open polylines, exactly.
+/// The region is closed: a part running along its boundary is inside. Output polylines follow
+/// their input's order and direction; they keep the input's vertices (after snapping, without
+/// repeated points and without vertices where the line goes straight on) plus the points where
+/// the line enters or leaves the region. A polyline whose last point equals its first is read
+/// as a loop, so a part through that point is not split there.
+/// @param lines  open polylines; one with fewer than 2 distinct grid points gives nothing.
+/// @param region closed paths, read with `regionRule`; may self-intersect.
+/// @throws InvalidInputError as simplify() (lines are named "line path i", region paths
+///         "clip path i").
+Paths clipLines(const Paths& lines, const Paths& region, FillRule regionRule,
+                LinePart part = LinePart::Inside, const Grid& grid = {});
+const char* toString(LinePart part);
+
 /// True when the fill rule counts winding number w as inside.
 bool isFilled(FillRule rule, long long w);
 

@@ -36,4 +36,12 @@ Side classifyPiece(const Windings& below, const Windings& contribution,
   return above ? Side::Above : Side::Below;
 }
 
+LinePlace classifyOpenPiece(const Windings& below, const Windings& above,
+                            const Combination& combination) {
+  const bool in = combination.inside(below);
+  const bool out = combination.inside(above);
+  if (in && out) return LinePlace::Inside;
+  return in || out ? LinePlace::Boundary : LinePlace::Outside;
+}
+
 }  // namespace roiclip::detail

@@ -11,9 +11,11 @@ namespace {
 
 [[noreturn]] void rejectCoordinate(double v, double scale, const char* axis, std::size_t pathIndex,
                                    std::size_t vertexIndex, int operand) {
-  const std::string where = std::string(operand == 0 ? "subject" : "clip") + " path " +
-                            std::to_string(pathIndex) + ", vertex " + std::to_string(vertexIndex) +
-                            ": " + axis;
+  const std::string where = std::string(operand == 0   ? "subject"
+                                        : operand == 1 ? "clip"
+                                                       : "line") +
+                            " path " + std::to_string(pathIndex) + ", vertex " +
+                            std::to_string(vertexIndex) + ": " + axis;
   if (!std::isfinite(v)) throw InvalidInputError(where + " is not a finite number");
   throw InvalidInputError(where + " = " + std::to_string(v) + " is outside the supported range +-" +
                           std::to_string(double(Grid::kMaxUnits) / scale));
@@ -64,22 +66,32 @@ void mergeStraightRuns(std::vector<IPoint>& ring) {
   ring.erase(ring.begin(), ring.begin() + std::ptrdiff_t(begin));
 }
 
-}  // namespace
+// Snap one path: validated grid points with consecutive repeats removed.
+void snapPath(const Path& path, std::size_t pathIndex, int operand, const Grid& grid,
+              std::vector<IPoint>& out) {
+  out.clear();
+  for (std::size_t i = 0; i < path.size(); ++i) {
+    const IPoint q{snap(path[i].x, grid.scale, "x", pathIndex, i, operand),
+                   snap(path[i].y, grid.scale, "y", pathIndex, i, operand)};
+    if (out.empty() || out.back() != q) out.push_back(q);
+  }
+}
 
-std::vector<std::vector<IPoint>> snapRings(const Paths& paths, int operand, const Grid& grid) {
+void checkGrid(const Grid& grid) {
   if (!(grid.scale > 0.0) || !std::isfinite(grid.scale)) {
     throw InvalidInputError("grid scale must be positive and finite, got " +
                             std::to_string(grid.scale));
   }
+}
+
+}  // namespace
+
+std::vector<std::vector<IPoint>> snapRings(const Paths& paths, int operand, const Grid& grid) {
+  checkGrid(grid);
   std::vector<std::vector<IPoint>> rings;
   std::vector<IPoint> ring;
   for (std::size_t p = 0; p < paths.size(); ++p) {
-    ring.clear();
-    for (std::size_t i = 0; i < paths[p].size(); ++i) {
-      const IPoint q{snap(paths[p][i].x, grid.scale, "x", p, i, operand),
-                     snap(paths[p][i].y, grid.scale, "y", p, i, operand)};
-      if (ring.empty() || ring.back() != q) ring.push_back(q);
-    }
+    snapPath(paths[p], p, operand, grid, ring);
     while (ring.size() > 1 && ring.back() == ring.front()) ring.pop_back();
     mergeStraightRuns(ring);
     if (ring.size() >= 2) rings.push_back(ring);  // a point encloses nothing
@@ -100,6 +112,34 @@ void appendInputEdges(const Paths& paths, int operand, const Grid& grid,
       }
     }
   }
+}
+
+void appendLineEdges(const Paths& lines, const Grid& grid, std::vector<InputEdge>& out,
+                     std::vector<std::size_t>& firstEdge) {
+  checkGrid(grid);
+  firstEdge.clear();
+  std::vector<IPoint> line;
+  for (std::size_t p = 0; p < lines.size(); ++p) {
+    firstEdge.push_back(out.size());
+    snapPath(lines[p], p, 2, grid, line);
+    // Interior vertices where the line goes straight on carry no shape; drop them.
+    std::size_t kept = 0;
+    for (const IPoint q : line) {
+      while (kept >= 2 && straightThrough(line[kept - 2], line[kept - 1], q)) --kept;
+      line[kept++] = q;
+    }
+    line.resize(kept);
+    for (std::size_t i = 0; i + 1 < line.size(); ++i) {
+      const IPoint s = line[i];
+      const IPoint t = line[i + 1];
+      if (s < t) {
+        out.push_back({s, t, +1, 0, true});
+      } else {
+        out.push_back({t, s, -1, 0, true});
+      }
+    }
+  }
+  firstEdge.push_back(out.size());
 }
 
 }  // namespace roiclip::detail

@@ -21,6 +21,7 @@ struct InputEdge {
   IPoint a, b;
   int direction = 0;  ///< +1 when the input runs a -> b, -1 when it runs b -> a
   int operand = 0;
+  bool open = false;  ///< a segment of an open polyline: it bounds nothing, it is only cut
 };
 
 /// An input edge whose ends are exact points (crossings) on the integer segment lineA-lineB;
@@ -37,12 +38,21 @@ struct ExactEdge {
 void appendInputEdges(const Paths& paths, int operand, const Grid& grid,
                       std::vector<InputEdge>& out);
 
+/// Stage 0 for open polylines (input.cpp): validate and snap each polyline, drop repeated points
+/// and vertices where it goes straight on, and emit its segments as open edges in path order.
+/// `firstEdge` receives, per polyline, the index in `out` of its first segment (plus one
+/// final entry), so the segments of polyline i are out[firstEdge[i] .. firstEdge[i+1]).
+void appendLineEdges(const Paths& lines, const Grid& grid, std::vector<InputEdge>& out,
+                     std::vector<std::size_t>& firstEdge);
+
 /// Which side of a piece is filled in the result.
 enum class Side : std::uint8_t { None = 0, Above = 1, Below = 2 };
 
 /// What the boolean combination of the operands is.
 struct Combination {
   bool binary = false;  ///< false: subject only (simplify)
+  /// false: only open pieces are wanted (clipLines), the region's own boundary is not stored
+  bool keepBoundary = true;
   ClipOp op = ClipOp::Intersection;
   FillRule subjectRule = FillRule::EvenOdd;
   FillRule clipRule = FillRule::EvenOdd;
@@ -55,6 +65,25 @@ struct Combination {
 /// holes") get Side::None and are not kept.
 Side classifyPiece(const Windings& below, const Windings& contribution,
                    const Combination& combination);
+
+/// Where a piece of an open polyline lies relative to the region.
+enum class LinePlace : std::uint8_t {
+  Outside,   ///< not filled on either side
+  Boundary,  ///< on the region's boundary: filled on exactly one side
+  Inside,    ///< filled on both sides
+};
+
+/// Stage 2 for open pieces (classify.cpp): from the winding numbers on the two sides of the
+/// closed pieces coincident with an open piece (equal when there are none).
+LinePlace classifyOpenPiece(const Windings& below, const Windings& above,
+                            const Combination& combination);
+
+/// A piece of one open input segment between two consecutive event points on it.
+struct OpenPiece {
+  int edge = -1;  ///< index of its segment in the sweep's input edges
+  XPoint left, right;
+  LinePlace place = LinePlace::Outside;
+};
 
 /// A piece of the planar arrangement: a maximal part of one or more coincident input edges
 /// that no other edge crosses or touches except at its two ends.
@@ -80,6 +109,9 @@ struct Arrangement {
   std::vector<XPoint> vertices;
   std::vector<EdgePiece> pieces;
   std::vector<Side> sides;  ///< filled side of each piece (never Side::None)
+  /// Every piece of every open input edge, in sweep order (so the pieces of one edge come
+  /// left to right).
+  std::vector<OpenPiece> openPieces;
 };
 
 /// Stage 1 (split_edges.cpp): sweep line over all edges. Finds every crossing, touching vertex

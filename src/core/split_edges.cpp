@@ -29,6 +29,8 @@ struct Active {
   int slot = -1;          // index of its output piece (result pieces only) while in the status
   int resultBelow = -1;   // nearest result piece below it when it was inserted
   int checkedAbove = -1;  // the last piece above it tested for a crossing (see checkCrossing)
+  bool open = false;      // a piece of an open polyline (zero contribution, never merged)
+  LinePlace place = LinePlace::Outside;  // open pieces: where it lies
   [[nodiscard]] int nearestResult() const { return slot >= 0 ? slot : resultBelow; }
   [[nodiscard]] IPoint direction() const { return {lineB.x - lineA.x, lineB.y - lineA.y}; }
 };
@@ -58,7 +60,8 @@ class Sweep {
       a.right = XPoint(e.b);
       a.lineA = e.a;
       a.lineB = e.b;
-      a.contribution[e.operand] = e.direction;
+      a.contribution[e.operand] = e.open ? 0 : e.direction;
+      a.open = e.open;
       initial_.push_back({e.a, int(active_.size()), false});
       initial_.push_back({e.b, int(active_.size()), true});
       active_.push_back(a);
@@ -116,7 +119,9 @@ class Sweep {
       }
       if (o != 0) return o > 0;
       const int s = crossSign(pa.direction(), pb.direction());
-      return s != 0 ? s > 0 : a < b;
+      if (s != 0) return s > 0;
+      // Coincident: the (single, merged) closed piece below the open ones, as visit() labels.
+      return pa.open != pb.open ? pb.open : a < b;
     }
     // Piece below point / point below piece, for finding the pieces through a point.
     bool operator()(int a, const XPoint& p) const {
@@ -199,6 +204,7 @@ class Sweep {
       Active& a = active_[id];
       inStatus_[id] = 0;
       if (a.slot >= 0) out_.pieces[a.slot].right = vertexHere(p);
+      if (a.open) out_.openPieces.push_back({id, a.left, p, a.place});
       if (!equal(a.right, p)) {
         a.left = p;
         starts_.push_back(id);
@@ -216,12 +222,25 @@ class Sweep {
     // pieces that bound the result (stage 2, classify, decides).
     Windings wind = belowPiece >= 0 ? windAbove(active_[belowPiece]) : Windings{};
     int resultBelow = belowPiece >= 0 ? active_[belowPiece].nearestResult() : -1;
+    int closedRun = -1;  // the last closed piece inserted here, and the winding below it
+    Windings closedRunBelow{};
     for (int id : starts_) {
       Active& a = active_[id];
       a.windBelow = wind;
       a.resultBelow = resultBelow;
       a.slot = -1;
-      const Side side = classifyPiece(wind, a.contribution, how_);
+      if (a.open) {
+        // An open piece coincident with the closed piece just below it lies on that piece:
+        // the region's winding numbers on its two sides are the ones around that piece.
+        const bool onClosed =
+            closedRun >= 0 && crossSign(active_[closedRun].direction(), a.direction()) == 0;
+        a.place = classifyOpenPiece(onClosed ? closedRunBelow : wind, wind, how_);
+      } else {
+        closedRun = id;
+        closedRunBelow = wind;
+      }
+      const Side side =
+          a.open || !how_.keepBoundary ? Side::None : classifyPiece(wind, a.contribution, how_);
       if (side != Side::None) {
         a.slot = int(out_.pieces.size());
         EdgePiece piece;
@@ -258,13 +277,15 @@ class Sweep {
     return {a.windBelow[0] + a.contribution[0], a.windBelow[1] + a.contribution[1]};
   }
 
-  // Sort the pieces starting at p by direction; merge runs of coincident ones into the shortest
-  // and re-start the rest where it ends. Pieces whose contributions cancel are dropped: they
-  // change no winding number (a spike out and back along itself).
+  // Sort the pieces starting at p by direction; merge runs of coincident closed ones into the
+  // shortest and re-start the rest where it ends. Closed pieces whose contributions cancel are
+  // dropped: they change no winding number (a spike out and back along itself). Open pieces are
+  // never merged or dropped; they follow the closed piece of their direction, as in the status.
   void mergeCoincident(const XPoint& p) {
     std::sort(starts_.begin(), starts_.end(), [this](int a, int b) {
       const int s = crossSign(active_[a].direction(), active_[b].direction());
       if (s != 0) return s > 0;
+      if (active_[a].open != active_[b].open) return active_[b].open;
       const int c = compare(active_[a].right, active_[b].right);
       return c != 0 ? c < 0 : a < b;
     });
@@ -272,7 +293,7 @@ class Sweep {
     for (std::size_t i = 0; i < starts_.size();) {
       const int first = starts_[i];
       std::size_t j = i + 1;
-      while (j < starts_.size() &&
+      while (j < starts_.size() && !active_[starts_[j]].open &&
              crossSign(active_[first].direction(), active_[starts_[j]].direction()) == 0) {
         Active& other = active_[starts_[j]];
         for (int k = 0; k < kOperands; ++k) active_[first].contribution[k] += other.contribution[k];
@@ -283,7 +304,7 @@ class Sweep {
         ++j;
       }
       const Windings& c = active_[first].contribution;
-      if (c[0] != 0 || c[1] != 0) starts_[kept++] = first;
+      if (active_[first].open || c[0] != 0 || c[1] != 0) starts_[kept++] = first;
       i = j;
     }
     starts_.resize(kept);

@@ -1,0 +1,126 @@
+// Open polylines (Canny edges, lane lines) clipped to a region.
+//
+// The polylines' segments go through the same sweep as the region's edges (stage 1), as open
+// edges: they are cut at every point where anything crosses or touches them, but contribute
+// nothing to any winding number. Each open piece is placed from the region's exact winding
+// numbers on its two sides (stage 2), and this stage chains the kept pieces back into
+// polylines in the order and direction of the input. A cut appears only where the place
+// changes, so the output keeps the input's vertices plus the points where a line enters or
+// leaves the region.
+#include <algorithm>
+
+#include <roiclip/roiclip.hpp>
+
+#include "pipeline.hpp"
+
+namespace roiclip {
+namespace detail {
+namespace {
+
+class LineAssembler {
+ public:
+  LineAssembler(const std::vector<OpenPiece>& pieces, std::size_t edgeCount, LinePart part,
+                const Grid& grid)
+      : pieces_(pieces), part_(part), inv_(1.0 / grid.scale) {
+    // Group the pieces by edge, keeping the sweep order (left to right) within each edge.
+    first_.assign(edgeCount + 1, 0);
+    for (const OpenPiece& piece : pieces) ++first_[std::size_t(piece.edge) + 1];
+    for (std::size_t e = 0; e < edgeCount; ++e) first_[e + 1] += first_[e];
+    order_.resize(pieces.size());
+    std::vector<std::size_t> next(first_.begin(), first_.end() - 1);
+    for (std::size_t i = 0; i < pieces.size(); ++i) {
+      order_[next[std::size_t(pieces[i].edge)]++] = int(i);
+    }
+  }
+
+  // Appends the kept parts of the polyline made of edges [begin, end) to `out`.
+  void assemble(const std::vector<InputEdge>& edges, std::size_t begin, std::size_t end,
+                Paths& out) {
+    const std::size_t firstOut = out.size();
+    bool open = false;  // a part is being built in out.back()
+    bool startsAtFirstVertex = false;
+    for (std::size_t e = begin; e < end; ++e) {
+      const bool forward = edges[e].direction > 0;
+      const std::size_t lo = first_[e];
+      const std::size_t hi = first_[e + 1];
+      for (std::size_t k = 0; k < hi - lo; ++k) {
+        const OpenPiece& piece = pieces_[std::size_t(order_[forward ? lo + k : hi - 1 - k])];
+        const XPoint& from = forward ? piece.left : piece.right;
+        const XPoint& to = forward ? piece.right : piece.left;
+        if (!kept(piece.place)) {
+          open = false;
+          continue;
+        }
+        if (!open) {
+          out.emplace_back();
+          push(out.back(), from);
+          open = true;
+          if (out.size() == firstOut + 1 && e == begin && k == 0) startsAtFirstVertex = true;
+        }
+        // Cuts inside one input segment between kept pieces are not shape: leave them out.
+        const bool last = k + 1 == hi - lo;
+        if (last || !kept(pieces_[std::size_t(order_[forward ? lo + k + 1 : hi - 2 - k])].place)) {
+          push(out.back(), to);
+        }
+      }
+    }
+    // A closed polyline (last point == first) kept across its start is one part, not two.
+    const bool closed =
+        end > begin && pointAt(edges[begin], true) == pointAt(edges[end - 1], false);
+    if (closed && open && startsAtFirstVertex && out.size() - firstOut >= 2) {
+      Path& last = out.back();
+      Path& head = out[firstOut];
+      last.insert(last.end(), head.begin() + 1, head.end());
+      head = std::move(last);
+      out.pop_back();
+    }
+  }
+
+ private:
+  [[nodiscard]] bool kept(LinePlace place) const {
+    return part_ == LinePart::Inside ? place != LinePlace::Outside : place == LinePlace::Outside;
+  }
+  // The polyline's point at the start (or end) of an input edge, in path order.
+  static IPoint pointAt(const InputEdge& e, bool start) {
+    return (e.direction > 0) == start ? e.a : e.b;
+  }
+  void push(Path& path, const XPoint& p) const { path.emplace_back(p.dx() * inv_, p.dy() * inv_); }
+
+  const std::vector<OpenPiece>& pieces_;
+  LinePart part_;
+  double inv_;
+  std::vector<std::size_t> first_;
+  std::vector<int> order_;
+};
+
+}  // namespace
+}  // namespace detail
+
+Paths clipLines(const Paths& lines, const Paths& region, FillRule regionRule, LinePart part,
+                const Grid& grid) {
+  using namespace detail;
+  std::vector<InputEdge> edges;
+  std::vector<std::size_t> firstEdge;
+  appendLineEdges(lines, grid, edges, firstEdge);
+  const std::size_t lineEdges = edges.size();
+  appendInputEdges(region, 1, grid, edges);
+  // Region edges are operand 1 so that errors name them "clip"; the union with an empty
+  // subject is the region itself.
+  Combination how;
+  how.binary = true;
+  how.op = ClipOp::Union;
+  how.clipRule = regionRule;
+  how.keepBoundary = false;
+  const Arrangement arrangement = splitEdges(edges, {}, how);
+
+  LineAssembler assembler(arrangement.openPieces, lineEdges, part, grid);
+  Paths out;
+  for (std::size_t i = 0; i + 1 < firstEdge.size(); ++i) {
+    assembler.assemble(edges, firstEdge[i], firstEdge[i + 1], out);
+  }
+  return out;
+}
+
+const char* toString(LinePart part) { return part == LinePart::Inside ? "inside" : "outside"; }
+
+}  // namespace roiclip
