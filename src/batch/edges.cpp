@@ -1,14 +1,7 @@
-// Open polylines: Canny edges traced into chains and clipped to the ROI with Boost.Geometry.
-// The core clips closed regions only; for open polylines Boost.Geometry's linestring/polygon
-// intersection does the job (floating point, which is enough for drawing and measuring edges).
+// Open polylines: Canny edges traced into chains (the core's clipLines clips them to the ROI).
 #include <array>
 #include <cmath>
 
-#include <boost/geometry.hpp>
-#include <boost/geometry/geometries/linestring.hpp>
-#include <boost/geometry/geometries/multi_linestring.hpp>
-#include <boost/geometry/geometries/point_xy.hpp>
-#include <boost/geometry/geometries/polygon.hpp>
 #include <opencv2/core.hpp>
 
 #include <roiclip/batch/process.hpp>
@@ -16,13 +9,6 @@
 namespace roiclip::batch {
 
 namespace {
-
-namespace bg = boost::geometry;
-using BPoint = bg::model::d2::point_xy<double>;
-// Clockwise (negative shoelace sum) outer rings, open rings: exactly roiclip's output rings.
-using BPolygon = bg::model::polygon<BPoint, true, false>;
-using BLine = bg::model::linestring<BPoint>;
-using BLines = bg::model::multi_linestring<BLine>;
 
 // 4-neighbours first, so chains follow straight steps before diagonal ones.
 constexpr std::array<std::array<int, 2>, 8> kSteps = {
@@ -89,36 +75,6 @@ std::vector<Path> traceEdges(const cv::Mat& edges) {
   for (int y = 0; y < h; ++y) {
     for (int x = 0; x < w; ++x) {
       if (free(x, y)) traceFrom(x, y);
-    }
-  }
-  return out;
-}
-
-std::vector<Path> clipPolylines(const std::vector<Path>& polylines, const PolygonSet& region) {
-  std::vector<BPolygon> polygons;
-  for (const Polygon& poly : region.polygons) {
-    BPolygon bp;
-    for (const Point& p : poly.outer) bp.outer().emplace_back(p.x, p.y);
-    for (const Path& hole : poly.holes) {
-      bp.inners().emplace_back();
-      for (const Point& p : hole) bp.inners().back().emplace_back(p.x, p.y);
-    }
-    polygons.push_back(std::move(bp));
-  }
-  std::vector<Path> out;
-  for (const Path& line : polylines) {
-    if (line.size() < 2) continue;
-    BLine bl;
-    for (const Point& p : line) bl.emplace_back(p.x, p.y);
-    for (const BPolygon& poly : polygons) {
-      BLines parts;
-      bg::intersection(bl, poly, parts);
-      for (const BLine& part : parts) {
-        if (part.size() < 2) continue;
-        Path path;
-        for (const BPoint& p : part) path.emplace_back(p.x(), p.y());
-        out.push_back(std::move(path));
-      }
     }
   }
   return out;

@@ -285,7 +285,7 @@ struct Processor::Impl {
         }
       }
       r.edgesIn = static_cast<int>(lines.size());
-      r.edges = clipPolylines(lines, roiRegion);
+      r.edges = clipLines(lines, r.roi, options.roiFillRule, LinePart::Inside, options.grid);
       r.edgeLength = polylineLength(r.edges);
     }
     r.seconds.clip = secondsSince(t);

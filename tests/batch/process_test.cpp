@@ -348,29 +348,6 @@ TEST(BatchJson, ResultJsonHasEveryFigure) {
 
 namespace {
 
-TEST(BatchEdges, ClipPolylinesAgainstSquareWithHole) {
-  // Square [0,10]^2 with the hole [4,6]^2, as roiclip orients them (outer negative).
-  const roiclip::PolygonSet region =
-      roiclip::simplify({{{0, 0}, {0, 10}, {10, 10}, {10, 0}}, {{4, 4}, {6, 4}, {6, 6}, {4, 6}}},
-                        roiclip::FillRule::EvenOdd);
-  ASSERT_EQ(region.polygons.size(), 1u);
-  ASSERT_EQ(region.polygons[0].holes.size(), 1u);
-  const std::vector<roiclip::Path> lines = {
-      {{-5, 5}, {15, 5}},          // crosses the square and the hole: 4 + 4 inside
-      {{-5, 1}, {5, 1}, {5, -3}},  // enters, turns, leaves: 5 + 1
-      {{20, 20}, {30, 30}},        // outside
-      {{2, 2}}};                   // one point: skipped
-  const std::vector<roiclip::Path> inside = rb::clipPolylines(lines, region);
-  EXPECT_EQ(inside.size(), 3u);
-  EXPECT_NEAR(rb::polylineLength(inside), 4 + 4 + 5 + 1, 1e-9);
-  for (const auto& line : inside) {
-    for (const auto& p : line) {
-      EXPECT_TRUE(p.x >= 0 && p.x <= 10 && p.y >= 0 && p.y <= 10);
-      EXPECT_FALSE(p.x > 4 && p.x < 6 && p.y > 4 && p.y < 6);
-    }
-  }
-}
-
 TEST(BatchEdges, TraceEdgesFollowsChainsAndLoops) {
   cv::Mat edges = cv::Mat::zeros(60, 80, CV_8U);
   cv::line(edges, {5, 5}, {40, 20}, 255, 1, cv::LINE_8);  // an open chain

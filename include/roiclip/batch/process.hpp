@@ -161,10 +161,6 @@ std::vector<Paths> detectContours(const cv::Mat& gray, const ContourOptions& opt
 /// starts another. Single pixels give one-point polylines.
 std::vector<Path> traceEdges(const cv::Mat& edges);
 
-/// The parts of open polylines inside a region (Boost.Geometry linestring/polygon intersection;
-/// the region's boundary counts as inside). Polylines with fewer than 2 points are skipped.
-std::vector<Path> clipPolylines(const std::vector<Path>& polylines, const PolygonSet& region);
-
 /// Total length of open polylines (px).
 double polylineLength(const std::vector<Path>& polylines);
 
