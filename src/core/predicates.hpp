@@ -126,24 +126,8 @@ inline bool less(const XPoint& a, const XPoint& b) { return compare(a, b) < 0; }
 /// from d1.
 inline int crossSign(IPoint d1, IPoint d2) { return signOf(i128(d1.x) * d2.y - i128(d1.y) * d2.x); }
 
-inline std::uint64_t gcd64(std::uint64_t a, std::uint64_t b) {
-  if (a == 0) return b;
-  if (b == 0) return a;
-  const int shift = __builtin_ctzll(a | b);
-  a >>= __builtin_ctzll(a);
-  do {
-    b >>= __builtin_ctzll(b);
-    if (a > b) std::swap(a, b);
-    b -= a;
-  } while (b != 0);
-  return a << shift;
-}
-
-inline std::uint64_t magnitude(i128 v) { return std::uint64_t(v < 0 ? -v : v); }
-
 /// Crossing point of the lines through grid segments (a, b) and (c, d). Returns false when the
-/// lines are parallel. The result is fully reduced, so crossings on the grid come back with
-/// W == 1.
+/// lines are parallel. Crossings on the grid come back with W == 1.
 inline bool lineIntersection(IPoint a, IPoint b, IPoint c, IPoint d, XPoint& out) {
   const i128 d1x = b.x - a.x, d1y = b.y - a.y, d2x = d.x - c.x, d2y = d.y - c.y;
   i128 den = d1x * d2y - d1y * d2x;
@@ -153,20 +137,19 @@ inline bool lineIntersection(IPoint a, IPoint b, IPoint c, IPoint d, XPoint& out
     den = -den;
     num = -num;
   }
-  // |den|, |num| < 2^64 (coordinates within 2^30). Reduce t = num / den; then, with
-  // gcd(num, den) = 1, gcd(X, Y, den) = gcd(gcd(d1x, d1y), den): both 64-bit gcds.
-  const std::uint64_t g = gcd64(magnitude(num), magnitude(den));
-  if (g > 1) {
-    num /= i128(g);
-    den /= i128(g);
-  }
-  const std::uint64_t g2 = gcd64(gcd64(magnitude(d1x), magnitude(d1y)), magnitude(den));
-  i128 x = i128(a.x) * den + d1x * num;
-  i128 y = i128(a.y) * den + d1y * num;
-  if (g2 > 1) {
-    x /= i128(g2);
-    y /= i128(g2);
-    den /= i128(g2);
+  const i128 x = i128(a.x) * den + d1x * num;
+  const i128 y = i128(a.y) * den + d1y * num;
+  // Not reduced by gcds (that cost more than the rest of the crossing): comparisons are exact
+  // for any representation. Crossings on the grid are stored with W == 1 for the fast paths;
+  // the double quotient is within 2^-50 relative of the exact one, so a grid point is always
+  // caught, and the exact product check rejects near misses.
+  const double fx = double(x) / double(den), fy = double(y) / double(den);
+  const double rx = double(std::int64_t(fx + (fx >= 0 ? 0.5 : -0.5)));
+  const double ry = double(std::int64_t(fy + (fy >= 0 ? 0.5 : -0.5)));
+  if (std::fabs(fx - rx) < 1e-3 && std::fabs(fy - ry) < 1e-3 && i128(rx) * den == x &&
+      i128(ry) * den == y) {
+    out = XPoint(IPoint{std::int64_t(rx), std::int64_t(ry)});
+    return true;
   }
   out = XPoint(x, y, den);
   return true;

@@ -213,10 +213,10 @@ class Sweep {
 
     mergeCoincident(p);
 
-    // One piece in, one piece out (a chain going on through p): reuse the status node. Nothing
-    // else passes through p, so the new piece sits exactly where the old one was.
-    const bool reuse = through_.size() == 1 && starts_.size() == 1;
-    if (!reuse) status_.erase(lo, hi);
+    // The pieces starting at p take the status positions of the pieces through p: every one of
+    // them lies between belowPiece and the piece above, so the nodes [lo, hi) are reused in
+    // order (a chain going on, two pieces crossing), and only the surplus is erased or inserted.
+    auto node = lo;
 
     // Insert bottom to top, labelling winding numbers from the piece below; keep only the
     // pieces that bound the result (stage 2, classify, decides).
@@ -255,14 +255,15 @@ class Sweep {
       }
       wind = windAbove(a);
       resultBelow = a.nearestResult();
-      if (reuse) {
-        const_cast<int&>(*lo) = id;  // same position in the order, see above
-        where_[id] = lo;
+      if (node != hi) {
+        const_cast<int&>(*node) = id;  // same position in the order, see above
+        where_[id] = node++;
       } else {
         where_[id] = status_.emplace_hint(hi, id);
       }
       inStatus_[id] = 1;
     }
+    status_.erase(node, hi);
 
     const int abovePiece = hi == status_.end() ? -1 : *hi;
     if (starts_.empty()) {
