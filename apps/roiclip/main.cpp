@@ -31,8 +31,9 @@ constexpr const char* kExitCodesHelp =
     "  0  success\n"
     "  1  command-line usage error\n"
     "  2  invalid input: unreadable or malformed file, NaN or non-numeric coordinate, ring with\n"
-    "     fewer than 3 distinct points, coordinate outside the grid range (one line on stderr\n"
-    "     names the file and the problem; no output file is written)\n"
+    "     fewer than 3 distinct points, line with fewer than 2 points, coordinate outside the\n"
+    "     grid range (one line on stderr names the file and the problem; no output file is\n"
+    "     written)\n"
     "  3  the output file cannot be written\n"
     "  4  internal error (a bug in roiclip: please report the input)\n";
 
@@ -63,14 +64,31 @@ CLI::Validator clipOpValidator() {
       "intersection|union|difference|xor");
 }
 
-void writeResult(const roiclip::PolygonSet& result, const std::string& output) {
+// GeoJSON to stdout, or atomically to the file `output`.
+template <class Result>
+void writeResult(const Result& result, const std::string& output,
+                 std::string (*toText)(const Result&, int),
+                 void (*writeFile)(const Result&, const std::string&, int)) {
   if (output.empty()) {
-    std::cout << roiclip::io::toGeoJson(result);
+    std::cout << toText(result, -1);
     std::cout.flush();
   } else {
-    roiclip::io::writeGeoJson(result, output);
+    writeFile(result, output, -1);
   }
 }
+
+constexpr const char* kClipLinesHelp =
+    "LINES: GeoJSON LineString, MultiLineString, or a Feature, FeatureCollection or\n"
+    "GeometryCollection of them, or {\"paths\": [[[x, y], ...], ...]} (a polyline whose last\n"
+    "point repeats its first is a loop). REGION: as for `clip` (closed; its boundary counts as\n"
+    "inside). Output: GeoJSON MultiLineString, properties \"length\" (px) and \"lines\".\n"
+    "\n"
+    "Example: a line from (-5, 5) via (5, 5) to (5, 15) and the square [0, 10]^2\n"
+    "  roiclip clip-lines line.geojson square.geojson\n"
+    "    -> [[0, 5], [5, 5], [5, 10]]                          length 10, lines 1\n"
+    "  roiclip clip-lines line.geojson square.geojson --part outside -o outside.geojson\n"
+    "    -> [[-5, 5], [0, 5]] and [[5, 10], [5, 15]]           length 10, lines 2\n"
+    "\n";
 
 }  // namespace
 
@@ -131,6 +149,25 @@ int main(int argc, char** argv) {
   clipCmd->add_option("-o,--output", clipOutput, "output GeoJSON file (default: stdout)");
   addGridScale(clipCmd);
 
+  std::string linesFile;
+  std::string regionFile;
+  std::string partName = "inside";
+  std::string regionRule = "evenodd";
+  std::string linesOutput;
+  auto* clipLinesCmd = app.add_subcommand(
+      "clip-lines", "the parts of open polylines LINES inside (or outside) REGION (GeoJSON out)");
+  clipLinesCmd->footer(std::string(kClipLinesHelp) + kExitCodesHelp);
+  clipLinesCmd->add_option("lines", linesFile, "open polylines file")->required();
+  clipLinesCmd->add_option("region", regionFile, "region paths file")->required();
+  clipLinesCmd->add_option("--part", partName, "which parts of LINES to keep")
+      ->transform(CLI::IsMember({"inside", "outside"}, CLI::ignore_case))
+      ->capture_default_str();
+  clipLinesCmd->add_option("--fill-rule", regionRule, "fill rule for REGION")
+      ->check(fillRuleValidator())
+      ->capture_default_str();
+  clipLinesCmd->add_option("-o,--output", linesOutput, "output GeoJSON file (default: stdout)");
+  addGridScale(clipLinesCmd);
+
   try {
 #ifdef ROICLIP_HAVE_BATCH
     // Options from --config go in front of the command line's own, so the command line wins.
@@ -162,7 +199,8 @@ int main(int argc, char** argv) {
     if (simplifyCmd->parsed()) {
       const roiclip::Paths paths = roiclip::io::readPaths(simplifyInput);
       const roiclip::FillRule rule = roiclip::parseFillRule(simplifyRule.c_str());
-      writeResult(roiclip::io::simplifyInput(paths, simplifyInput, rule, grid), simplifyOutput);
+      writeResult(roiclip::io::simplifyInput(paths, simplifyInput, rule, grid), simplifyOutput,
+                  roiclip::io::toGeoJson, roiclip::io::writeGeoJson);
     } else if (clipCmd->parsed()) {
       const std::string base = bothRule.empty() ? "evenodd" : bothRule;
       const roiclip::FillRule sRule =
@@ -174,7 +212,17 @@ int main(int argc, char** argv) {
       const roiclip::Paths clipPaths = roiclip::io::readPaths(clipFile);
       writeResult(roiclip::io::clipInputs(op, subject, subjectFile, clipPaths, clipFile, sRule,
                                           cRule, grid),
-                  clipOutput);
+                  clipOutput, roiclip::io::toGeoJson, roiclip::io::writeGeoJson);
+    } else if (clipLinesCmd->parsed()) {
+      const roiclip::FillRule rule = roiclip::parseFillRule(regionRule.c_str());
+      // IsMember() has already turned any spelling into "inside" or "outside".
+      const roiclip::LinePart part =
+          partName == "outside" ? roiclip::LinePart::Outside : roiclip::LinePart::Inside;
+      const roiclip::Paths lines = roiclip::io::readLines(linesFile);
+      const roiclip::Paths region = roiclip::io::readPaths(regionFile);
+      writeResult(
+          roiclip::io::clipLinesInputs(lines, linesFile, region, regionFile, rule, part, grid),
+          linesOutput, roiclip::io::linesToGeoJson, roiclip::io::writeLinesGeoJson);
     }
   } catch (const roiclip::InvalidInputError& e) {
     std::cerr << "roiclip: error: " << e.what() << "\n";

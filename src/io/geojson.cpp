@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <initializer_list>
 #include <sstream>
 #include <utility>
 
@@ -46,46 +47,31 @@ std::string readFile(const std::string& file) {
   return buffer.str();
 }
 
-// Reads rings and remembers how many paths came before, so a ring's message can also give the
-// flat path index the core uses in its own messages.
-class RingReader {
+// Reads rings and polylines and remembers how many paths came before, so a message can also give
+// the flat path index the core uses in its own messages.
+class PathReader {
  public:
-  RingReader(const std::string& source, const ReadOptions& options)
+  PathReader(const std::string& source, const ReadOptions& options)
       : source_(source), options_(options) {}
 
   Path readRing(const json& ring, const std::string& where, bool dropClosingPoint) {
-    // Nested GeoJSON rings also get their flat index: the core's messages use it.
-    const std::string at =
-        where.rfind("path ", 0) == 0 ? where : where + " (path " + std::to_string(pathCount_) + ")";
-    if (!ring.is_array()) fail(source_, at, "expected an array of points, got " + typeName(ring));
-    Path path;
-    path.reserve(ring.size());
-    for (std::size_t i = 0; i < ring.size(); ++i) {
-      const json& point = ring[i];
-      const std::string pointAt = at + ", point " + std::to_string(i);
-      if (!point.is_array() || point.size() < 2 || point.size() > 3) {
-        fail(source_, pointAt,
-             "expected [x, y] (or [x, y, z]), got " +
-                 (point.is_array() ? "an array of " + std::to_string(point.size()) + " values"
-                                   : typeName(point)));
-      }
-      double xy[2];
-      for (int k = 0; k < 2; ++k) {
-        const json& value = point[std::size_t(k)];
-        const char* axis = k == 0 ? "x" : "y";
-        if (!value.is_number()) {
-          fail(source_, pointAt, std::string(axis) + " is not a number (" + typeName(value) + ")");
-        }
-        xy[k] = value.get<double>();
-        // JSON has no NaN or infinity and nlohmann rejects 1e999; checked anyway so that no
-        // non-finite value can reach the core whatever the parser accepts.
-        if (!std::isfinite(xy[k])) fail(source_, pointAt, std::string(axis) + " is not finite");
-      }
-      path.emplace_back(xy[0], xy[1]);
-    }
+    const std::string at = flatName(where);
+    Path path = readPoints(ring, at);
     if (dropClosingPoint && path.size() > 1 && path.front() == path.back()) path.pop_back();
     if (!options_.allowDegenerateRings && distinctPoints(path) < 3) {
       fail(source_, at, "ring has fewer than 3 distinct points");
+    }
+    ++pathCount_;
+    return path;
+  }
+
+  // An open polyline: every point kept, a repeated first point included (the core reads it as a
+  // loop). Equal points are not counted away: a zero-length line is valid and clips to nothing.
+  Path readLine(const json& line, const std::string& where) {
+    const std::string at = flatName(where);
+    Path path = readPoints(line, at);
+    if (!options_.allowDegenerateRings && path.size() < 2) {
+      fail(source_, at, "line has fewer than 2 points");
     }
     ++pathCount_;
     return path;
@@ -127,26 +113,90 @@ class RingReader {
     return polygons;
   }
 
-  Feature readFeature(const json& feature, const std::string& where) {
-    Feature out;
-    const auto geometry = feature.find("geometry");
-    if (geometry == feature.end()) fail(source_, where, "Feature without \"geometry\"");
-    out.polygons = readGeometry(*geometry, where);
-    const auto properties = feature.find("properties");
-    if (properties != feature.end() && properties->is_object()) {
-      for (const auto& [key, value] : properties->items()) {
-        if (value.is_string()) out.properties[key] = value.get<std::string>();
+  // Line coordinates of a LineString, MultiLineString or GeometryCollection, appended to `out`.
+  void readLineGeometry(const json& geometry, const std::string& where, Paths& out) {
+    if (geometry.is_null()) return;
+    if (!geometry.is_object()) fail(source_, where, "geometry must be an object or null");
+    const std::string type = memberType(geometry, where);
+    if (type == "GeometryCollection") {
+      const auto members = geometry.find("geometries");
+      if (members == geometry.end() || !members->is_array()) {
+        fail(source_, where, "GeometryCollection without a \"geometries\" array");
       }
+      for (std::size_t g = 0; g < members->size(); ++g) {
+        readLineGeometry((*members)[g], where + ", member " + std::to_string(g), out);
+      }
+      return;
+    }
+    if (type != "LineString" && type != "MultiLineString") {
+      fail(source_, where,
+           "unsupported geometry type \"" + type + "\" (expected LineString or MultiLineString)");
+    }
+    const auto coords = geometry.find("coordinates");
+    if (coords == geometry.end()) fail(source_, where, type + " without \"coordinates\"");
+    if (type == "LineString") {
+      out.push_back(readLine(*coords, where + ", line 0"));
+      return;
+    }
+    if (!coords->is_array()) fail(source_, where, "MultiLineString coordinates must be an array");
+    for (std::size_t l = 0; l < coords->size(); ++l) {
+      out.push_back(readLine((*coords)[l], where + ", line " + std::to_string(l)));
+    }
+  }
+
+  std::vector<Feature> readGeoJson(const json& root) {
+    std::vector<Feature> features;
+    forEachGeometry(root,
+                    [&](const json& geometry, const json* properties, const std::string& where) {
+                      Feature out;
+                      out.polygons = readGeometry(geometry, where);
+                      if (properties != nullptr && properties->is_object()) {
+                        for (const auto& [key, value] : properties->items()) {
+                          if (value.is_string()) out.properties[key] = value.get<std::string>();
+                        }
+                      }
+                      features.push_back(std::move(out));
+                    });
+    return features;
+  }
+
+  Paths readLinesGeoJson(const json& root) {
+    Paths lines;
+    forEachGeometry(root, [&](const json& geometry, const json*, const std::string& where) {
+      readLineGeometry(geometry, where, lines);
+    });
+    return lines;
+  }
+
+  // {"paths": [...]}: closed rings (a repeated first point dropped) or open lines (kept).
+  Paths readPlain(const json& root, bool lines) {
+    const json& list = root.at("paths");
+    if (!list.is_array()) fail(source_, "", "\"paths\" must be an array of paths");
+    Paths out;
+    out.reserve(list.size());
+    for (std::size_t p = 0; p < list.size(); ++p) {
+      pathCount_ = p;
+      const std::string where = "path " + std::to_string(p);
+      out.push_back(lines ? readLine(list[p], where) : readRing(list[p], where, true));
     }
     return out;
   }
 
-  std::vector<Feature> readGeoJson(const json& root) {
+ private:
+  // Calls visit(geometry, properties or nullptr, where) for each feature of a FeatureCollection,
+  // for a lone Feature, or for a bare geometry at the top level.
+  template <class Visit>
+  void forEachGeometry(const json& root, Visit visit) const {
     if (!root.is_object()) {
       fail(source_, "", "expected a JSON object at the top level, got " + typeName(root));
     }
     const std::string type = memberType(root, "");
-    std::vector<Feature> features;
+    const auto visitFeature = [&](const json& feature, const std::string& where) {
+      const auto geometry = feature.find("geometry");
+      if (geometry == feature.end()) fail(source_, where, "Feature without \"geometry\"");
+      const auto properties = feature.find("properties");
+      visit(*geometry, properties == feature.end() ? nullptr : &*properties, where);
+    };
     if (type == "FeatureCollection") {
       const auto list = root.find("features");
       if (list == root.end() || !list->is_array()) {
@@ -158,31 +208,53 @@ class RingReader {
         if (!feature.is_object() || memberType(feature, where) != "Feature") {
           fail(source_, where, "expected an object of type \"Feature\"");
         }
-        features.push_back(readFeature(feature, where));
+        visitFeature(feature, where);
       }
     } else if (type == "Feature") {
-      features.push_back(readFeature(root, "feature"));
+      visitFeature(root, "feature");
     } else {
-      Feature feature;
-      feature.polygons = readGeometry(root, "geometry");
-      features.push_back(std::move(feature));
+      visit(root, nullptr, "geometry");
     }
-    return features;
   }
 
-  Paths readPlain(const json& root) {
-    const json& list = root.at("paths");
-    if (!list.is_array()) fail(source_, "", "\"paths\" must be an array of paths");
-    Paths out;
-    out.reserve(list.size());
-    for (std::size_t p = 0; p < list.size(); ++p) {
-      pathCount_ = p;
-      out.push_back(readRing(list[p], "path " + std::to_string(p), true));
-    }
-    return out;
+  // Nested GeoJSON rings and lines also get their flat index: the core's messages use it.
+  std::string flatName(const std::string& where) const {
+    return where.rfind("path ", 0) == 0 ? where
+                                        : where + " (path " + std::to_string(pathCount_) + ")";
   }
 
- private:
+  Path readPoints(const json& points, const std::string& at) const {
+    if (!points.is_array()) {
+      fail(source_, at, "expected an array of points, got " + typeName(points));
+    }
+    Path path;
+    path.reserve(points.size());
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      const json& point = points[i];
+      const std::string pointAt = at + ", point " + std::to_string(i);
+      if (!point.is_array() || point.size() < 2 || point.size() > 3) {
+        fail(source_, pointAt,
+             "expected [x, y] (or [x, y, z]), got " +
+                 (point.is_array() ? "an array of " + std::to_string(point.size()) + " values"
+                                   : typeName(point)));
+      }
+      double xy[2];
+      for (int k = 0; k < 2; ++k) {
+        const json& value = point[std::size_t(k)];
+        const char* axis = k == 0 ? "x" : "y";
+        if (!value.is_number()) {
+          fail(source_, pointAt, std::string(axis) + " is not a number (" + typeName(value) + ")");
+        }
+        xy[k] = value.get<double>();
+        // JSON has no NaN or infinity and nlohmann rejects 1e999; checked anyway so that no
+        // non-finite value can reach the core whatever the parser accepts.
+        if (!std::isfinite(xy[k])) fail(source_, pointAt, std::string(axis) + " is not finite");
+      }
+      path.emplace_back(xy[0], xy[1]);
+    }
+    return path;
+  }
+
   std::string memberType(const json& object, const std::string& where) const {
     const auto type = object.find("type");
     if (type == object.end() || !type->is_string()) {
@@ -219,69 +291,28 @@ json ringJson(const Path& ring) {
   return out;
 }
 
-// The core names the operand ("subject path 3, vertex 1: ..."); swap that word for the source.
-[[noreturn]] void rethrowWithSource(const InvalidInputError& e, const std::string& subjectSource,
-                                    const std::string* clipSource) {
-  std::string message = e.what();
-  const std::string subjectWord = "subject ";
-  const std::string clipWord = "clip ";
-  if (message.rfind(subjectWord, 0) == 0) {
-    throw InvalidInputError(subjectSource + ": " + message.substr(subjectWord.size()));
-  }
-  if (clipSource != nullptr && message.rfind(clipWord, 0) == 0) {
-    throw InvalidInputError(*clipSource + ": " + message.substr(clipWord.size()));
-  }
-  throw InvalidInputError(subjectSource + (clipSource ? ", " + *clipSource : "") + ": " + message);
-}
+// The core names the operand ("subject path 3, vertex 1: ...", "clip path ...", "line path ...");
+// swap that word for the source the operand was read from.
+struct Operand {
+  const char* word;
+  const std::string& source;
+};
 
-}  // namespace
-
-Paths parsePaths(const std::string& text, const std::string& source, const ReadOptions& options) {
-  const json root = parseJson(text, source);
-  RingReader reader(source, options);
-  if (isPlain(root)) return reader.readPlain(root);
-  Paths out;
-  for (Feature& feature : reader.readGeoJson(root)) {
-    for (Paths& polygon : feature.polygons) {
-      for (Path& ring : polygon) out.push_back(std::move(ring));
+[[noreturn]] void rethrowWithSource(const InvalidInputError& e,
+                                    std::initializer_list<Operand> operands) {
+  const std::string message = e.what();
+  std::string sources;
+  for (const Operand& operand : operands) {
+    const std::string word = std::string(operand.word) + " ";
+    if (message.rfind(word, 0) == 0) {
+      throw InvalidInputError(operand.source + ": " + message.substr(word.size()));
     }
+    sources += (sources.empty() ? "" : ", ") + operand.source;
   }
-  return out;
+  throw InvalidInputError(sources + ": " + message);
 }
 
-Paths readPaths(const std::string& file, const ReadOptions& options) {
-  return parsePaths(readFile(file), file, options);
-}
-
-std::vector<Feature> parseFeatures(const std::string& text, const std::string& source,
-                                   const ReadOptions& options) {
-  const json root = parseJson(text, source);
-  if (isPlain(root)) fail(source, "", "expected GeoJSON, got a plain {\"paths\": ...} object");
-  RingReader reader(source, options);
-  return reader.readGeoJson(root);
-}
-
-std::vector<Feature> readFeatures(const std::string& file, const ReadOptions& options) {
-  return parseFeatures(readFile(file), file, options);
-}
-
-std::string toGeoJson(const PolygonSet& set, int indent) {
-  json polygons = json::array();
-  for (const Polygon& polygon : set.polygons) {
-    json rings = json::array();
-    rings.push_back(ringJson(polygon.outer));
-    for (const Path& hole : polygon.holes) rings.push_back(ringJson(hole));
-    polygons.push_back(std::move(rings));
-  }
-  json feature = {{"type", "Feature"},
-                  {"properties", {{"area", set.area()}, {"rings", set.ringCount()}}},
-                  {"geometry", {{"type", "MultiPolygon"}, {"coordinates", std::move(polygons)}}}};
-  json root = {{"type", "FeatureCollection"}, {"features", json::array({std::move(feature)})}};
-  return root.dump(indent) + "\n";
-}
-
-void writeGeoJson(const PolygonSet& set, const std::string& file, int indent) {
-  const std::string text = toGeoJson(set, indent);
+void writeTextAtomically(const std::string& text, const std::string& file) {
   // Same folder as the target so that the rename cannot cross file systems; the pid keeps two
   // concurrent writers (and any user file called *.tmp) apart.
   const std::string temp = file + ".roiclip-tmp-" + std::to_string(::getpid());
@@ -301,12 +332,99 @@ void writeGeoJson(const PolygonSet& set, const std::string& file, int indent) {
   }
 }
 
+json featureCollection(json geometry, json properties) {
+  json feature = {{"type", "Feature"},
+                  {"properties", std::move(properties)},
+                  {"geometry", std::move(geometry)}};
+  return {{"type", "FeatureCollection"}, {"features", json::array({std::move(feature)})}};
+}
+
+}  // namespace
+
+Paths parsePaths(const std::string& text, const std::string& source, const ReadOptions& options) {
+  const json root = parseJson(text, source);
+  PathReader reader(source, options);
+  if (isPlain(root)) return reader.readPlain(root, false);
+  Paths out;
+  for (Feature& feature : reader.readGeoJson(root)) {
+    for (Paths& polygon : feature.polygons) {
+      for (Path& ring : polygon) out.push_back(std::move(ring));
+    }
+  }
+  return out;
+}
+
+Paths readPaths(const std::string& file, const ReadOptions& options) {
+  return parsePaths(readFile(file), file, options);
+}
+
+Paths parseLines(const std::string& text, const std::string& source, const ReadOptions& options) {
+  const json root = parseJson(text, source);
+  PathReader reader(source, options);
+  return isPlain(root) ? reader.readPlain(root, true) : reader.readLinesGeoJson(root);
+}
+
+Paths readLines(const std::string& file, const ReadOptions& options) {
+  return parseLines(readFile(file), file, options);
+}
+
+std::vector<Feature> parseFeatures(const std::string& text, const std::string& source,
+                                   const ReadOptions& options) {
+  const json root = parseJson(text, source);
+  if (isPlain(root)) fail(source, "", "expected GeoJSON, got a plain {\"paths\": ...} object");
+  PathReader reader(source, options);
+  return reader.readGeoJson(root);
+}
+
+std::vector<Feature> readFeatures(const std::string& file, const ReadOptions& options) {
+  return parseFeatures(readFile(file), file, options);
+}
+
+std::string toGeoJson(const PolygonSet& set, int indent) {
+  json polygons = json::array();
+  for (const Polygon& polygon : set.polygons) {
+    json rings = json::array();
+    rings.push_back(ringJson(polygon.outer));
+    for (const Path& hole : polygon.holes) rings.push_back(ringJson(hole));
+    polygons.push_back(std::move(rings));
+  }
+  return featureCollection({{"type", "MultiPolygon"}, {"coordinates", std::move(polygons)}},
+                           {{"area", set.area()}, {"rings", set.ringCount()}})
+             .dump(indent) +
+         "\n";
+}
+
+void writeGeoJson(const PolygonSet& set, const std::string& file, int indent) {
+  writeTextAtomically(toGeoJson(set, indent), file);
+}
+
+std::string linesToGeoJson(const Paths& lines, int indent) {
+  json coordinates = json::array();
+  double length = 0.0;
+  for (const Path& line : lines) {
+    json points = json::array();
+    for (std::size_t i = 0; i < line.size(); ++i) {
+      points.push_back({line[i].x, line[i].y});
+      if (i > 0) length += std::hypot(line[i].x - line[i - 1].x, line[i].y - line[i - 1].y);
+    }
+    coordinates.push_back(std::move(points));
+  }
+  return featureCollection({{"type", "MultiLineString"}, {"coordinates", std::move(coordinates)}},
+                           {{"length", length}, {"lines", lines.size()}})
+             .dump(indent) +
+         "\n";
+}
+
+void writeLinesGeoJson(const Paths& lines, const std::string& file, int indent) {
+  writeTextAtomically(linesToGeoJson(lines, indent), file);
+}
+
 PolygonSet simplifyInput(const Paths& paths, const std::string& source, FillRule rule,
                          const Grid& grid) {
   try {
     return simplify(paths, rule, grid);
   } catch (const InvalidInputError& e) {
-    rethrowWithSource(e, source, nullptr);
+    rethrowWithSource(e, {{"subject", source}});
   }
 }
 
@@ -316,7 +434,17 @@ PolygonSet clipInputs(ClipOp op, const Paths& subject, const std::string& subjec
   try {
     return clip(op, subject, clipPaths, subjectRule, clipRule, grid);
   } catch (const InvalidInputError& e) {
-    rethrowWithSource(e, subjectSource, &clipSource);
+    rethrowWithSource(e, {{"subject", subjectSource}, {"clip", clipSource}});
+  }
+}
+
+Paths clipLinesInputs(const Paths& lines, const std::string& linesSource, const Paths& region,
+                      const std::string& regionSource, FillRule regionRule, LinePart part,
+                      const Grid& grid) {
+  try {
+    return clipLines(lines, region, regionRule, part, grid);
+  } catch (const InvalidInputError& e) {
+    rethrowWithSource(e, {{"line", linesSource}, {"clip", regionSource}});
   }
 }
 

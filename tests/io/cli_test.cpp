@@ -82,7 +82,7 @@ class Cli : public ::testing::Test {
 };
 
 TEST_F(Cli, HelpDocumentsExitCodes) {
-  for (const char* args : {"--help", "simplify --help", "clip --help"}) {
+  for (const char* args : {"--help", "simplify --help", "clip --help", "clip-lines --help"}) {
     const CliRun r = run(args);
     EXPECT_EQ(r.exitCode, 0) << args;
     EXPECT_NE(r.out.find("Exit codes"), std::string::npos) << args;
@@ -226,6 +226,120 @@ TEST_F(Cli, UnwritableOutput) {
   EXPECT_EQ(r.exitCode, 3);
   EXPECT_TRUE(r.out.empty());
   EXPECT_NE(r.err.find("no/such/x.json"), std::string::npos) << r.err;
+}
+
+// --- clip-lines ---
+
+// The lines of a MultiLineString written by `clip-lines`, as nested JSON arrays.
+json lineCoordinates(const std::string& text) {
+  return json::parse(text).at("features")[0].at("geometry").at("coordinates");
+}
+
+TEST_F(Cli, ClipLinesHelpHasAnExample) {
+  const CliRun r = run("clip-lines --help");
+  EXPECT_EQ(r.exitCode, 0);
+  EXPECT_NE(r.out.find("Example"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("--part outside"), std::string::npos) << r.out;
+}
+
+// lines_cross.geojson against the square [0, 10]^2, worked by hand:
+//  line 0 (-5,5) -> (5,5) -> (5,15): enters at (0,5), leaves at (5,10);
+//  line 1 (2,2) -> (8,2): inside throughout;
+//  line 2 (-2,10) -> (12,10): runs along the top edge from (0,10) to (10,10), which is inside
+//  (the region is closed).
+TEST_F(Cli, ClipLinesInsideAndOutsideOfASquare) {
+  const std::string files = "'" + kData + "lines_cross.geojson' '" + kData + "square.geojson'";
+  const CliRun inside = run("clip-lines " + files);
+  ASSERT_EQ(inside.exitCode, 0) << inside.err;
+  EXPECT_TRUE(inside.err.empty());
+  EXPECT_EQ(lineCoordinates(inside.out),
+            json::parse("[[[0,5],[5,5],[5,10]], [[2,2],[8,2]], [[0,10],[10,10]]]"));
+  EXPECT_DOUBLE_EQ(properties(inside.out).at("length").get<double>(), 10.0 + 6.0 + 10.0);
+  EXPECT_EQ(properties(inside.out).at("lines").get<int>(), 3);
+  EXPECT_EQ(run("clip-lines --part inside " + files).out, inside.out);  // the default
+
+  const CliRun outside = run("clip-lines --part outside " + files);
+  ASSERT_EQ(outside.exitCode, 0) << outside.err;
+  EXPECT_EQ(lineCoordinates(outside.out),
+            json::parse("[[[-5,5],[0,5]], [[5,10],[5,15]], [[-2,10],[0,10]], [[10,10],[12,10]]]"));
+  EXPECT_DOUBLE_EQ(properties(outside.out).at("length").get<double>(), 5.0 + 5.0 + 2.0 + 2.0);
+  EXPECT_EQ(properties(outside.out).at("lines").get<int>(), 4);
+  EXPECT_EQ(run("clip-lines --part Outside " + files).out, outside.out);  // any case
+}
+
+TEST_F(Cli, ClipLinesFillRuleAndOutputFile) {
+  const std::string lines = "'" + kData + "lines_cross.geojson'";
+  const std::string twice = "'" + kData + "twice_wound.json'";
+  // The doubly wound square [0, 10]^2 is empty under even-odd (the default): every line is
+  // outside, whole.
+  const CliRun evenOdd = run("clip-lines " + lines + " " + twice);
+  ASSERT_EQ(evenOdd.exitCode, 0) << evenOdd.err;
+  EXPECT_EQ(properties(evenOdd.out).at("lines").get<int>(), 0);
+  const CliRun whole = run("clip-lines --part outside " + lines + " " + twice);
+  EXPECT_EQ(lineCoordinates(whole.out),
+            json::parse("[[[-5,5],[5,5],[5,15]], [[2,2],[8,2]], [[-2,10],[12,10]]]"));
+  const fs::path out = dir_ / "inside.geojson";
+  const CliRun nonZero =
+      run("clip-lines --fill-rule nonzero " + lines + " " + twice + " -o '" + out.string() + "'");
+  ASSERT_EQ(nonZero.exitCode, 0) << nonZero.err;
+  EXPECT_TRUE(nonZero.out.empty());
+  EXPECT_DOUBLE_EQ(properties(slurp(out)).at("length").get<double>(), 26.0);
+}
+
+TEST_F(Cli, ClipLinesBadInput) {
+  const struct {
+    const char* lines;
+    const char* region;
+    const char* file;  // named in the message
+    const char* problem;
+  } cases[] = {
+      {"no_such_file.json", "square.geojson", "no_such_file.json", "cannot open"},
+      {"lines_cross.geojson", "no_such_file.json", "no_such_file.json", "cannot open"},
+      {"bad_syntax.json", "square.geojson", "bad_syntax.json", "not valid JSON"},
+      {"lines_nan.json", "square.geojson", "lines_nan.json", "not valid JSON"},
+      {"lines_cross.geojson", "string_coordinate.json", "string_coordinate.json",
+       "y is not a number"},
+      // A region file is not a lines file.
+      {"square.geojson", "square.geojson", "square.geojson",
+       "unsupported geometry type \"Polygon\""},
+      // Out of range on the grid: the core's message, naming the file it came from.
+      {"lines_cross.geojson", "out_of_range.json", "out_of_range.json: path 1, vertex 1",
+       "outside the supported range"},
+      {"out_of_range.json", "square.geojson", "out_of_range.json: path 1, vertex 1",
+       "outside the supported range"},
+  };
+  for (const auto& c : cases) {
+    SCOPED_TRACE(std::string(c.lines) + " " + c.region);
+    expectBadInput(run("clip-lines '" + kData + c.lines + "' '" + kData + c.region + "'"), c.file,
+                   c.problem);
+  }
+}
+
+TEST_F(Cli, ClipLinesBadInputWritesNoOutputFile) {
+  const fs::path out = dir_ / "lines.geojson";
+  { std::ofstream(out) << "previous"; }
+  const CliRun r = run("clip-lines '" + kData + "lines_nan.json' '" + kData +
+                       "square.geojson' -o '" + out.string() + "'");
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_EQ(slurp(out), "previous");
+  std::size_t entries = 0;
+  for ([[maybe_unused]] const auto& e : fs::directory_iterator(dir_)) ++entries;
+  EXPECT_EQ(entries, 1u);
+  const CliRun unwritable = run("clip-lines '" + kData + "lines_cross.geojson' '" + kData +
+                                "square.geojson' -o '" + (dir_ / "no/such/x.json").string() + "'");
+  EXPECT_EQ(unwritable.exitCode, 3);
+  EXPECT_TRUE(unwritable.out.empty());
+}
+
+TEST_F(Cli, ClipLinesUsageErrors) {
+  const std::string square = "'" + kData + "square.geojson'";
+  const std::string lines = "'" + kData + "lines_cross.geojson'";
+  EXPECT_EQ(run("clip-lines " + lines).exitCode, 1);
+  const CliRun part = run("clip-lines --part sideways " + lines + " " + square);
+  EXPECT_EQ(part.exitCode, 1);
+  EXPECT_NE(part.err.find("sideways"), std::string::npos) << part.err;
+  EXPECT_EQ(run("clip-lines --fill-rule sometimes " + lines + " " + square).exitCode, 1);
+  EXPECT_EQ(run("clip-lines --grid-scale 0 " + lines + " " + square).exitCode, 1);
 }
 
 }  // namespace

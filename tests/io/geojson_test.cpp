@@ -247,5 +247,180 @@ TEST(ReadErrors, CoordinateOutOfRangeNamesFileAndPath) {
       {"out_of_range.json: path 1, vertex 1"});
 }
 
+// --- open polylines (clipLines input and output) ---
+
+TEST(ParseLines, LineStringKeepsEveryPointAndAltitudeIsIgnored) {
+  const Paths lines =
+      parseLines(R"({"type":"LineString","coordinates":[[0,0,9],[4,0],[4,3.5],[0,0]]})");
+  ASSERT_EQ(lines.size(), 1u);
+  // The repeated first point stays: the core reads such a polyline as a loop.
+  EXPECT_EQ(lines[0], (Path{{0, 0}, {4, 0}, {4, 3.5}, {0, 0}}));
+}
+
+TEST(ParseLines, MultiLineStringFeature) {
+  const Paths lines = readLines(kData + "lines_cross.geojson");
+  EXPECT_EQ(lines, (Paths{{{-5, 5}, {5, 5}, {5, 15}}, {{2, 2}, {8, 2}}, {{-2, 10}, {12, 10}}}));
+}
+
+TEST(ParseLines, FeatureCollectionAndNestedGeometryCollections) {
+  // Feature 0: a GeometryCollection of a LineString and a GeometryCollection holding a
+  // MultiLineString; feature 1: null geometry; feature 2: a closed LineString (a loop).
+  const Paths lines = readLines(kData + "lines_collection.geojson");
+  EXPECT_EQ(lines, (Paths{{{0, 0}, {1, 0}},
+                          {{0, 1}, {1, 1}, {1, 2}},
+                          {{0, 2}, {1, 3}},
+                          {{5, 5}, {6, 5}, {6, 6}, {5, 5}}}));
+}
+
+TEST(ParseLines, PlainJsonKeepsTheClosingPoint) {
+  const Paths lines = readLines(kData + "lines_loop.json");
+  ASSERT_EQ(lines.size(), 2u);
+  EXPECT_EQ(lines[0].size(), 4u);  // parsePaths() would drop the repeat and give 3
+  EXPECT_EQ(lines[0].front(), lines[0].back());
+  ReadOptions lenient;  // path 1 is no ring
+  lenient.allowDegenerateRings = true;
+  EXPECT_EQ(readPaths(kData + "lines_loop.json", lenient)[0].size(), 3u);
+  EXPECT_EQ(lines[1], (Path{{-4, 4}, {4, 4}}));
+}
+
+TEST(ParseLines, EmptyInputsAndZeroLengthLinesAreValid) {
+  EXPECT_TRUE(parseLines(R"({"type":"MultiLineString","coordinates":[]})").empty());
+  EXPECT_TRUE(parseLines(R"({"type":"FeatureCollection","features":[]})").empty());
+  EXPECT_TRUE(parseLines(R"({"type":"GeometryCollection","geometries":[]})").empty());
+  EXPECT_TRUE(parseLines(R"({"paths":[]})").empty());
+  // Two equal points: valid (GeoJSON asks only for 2 positions); the core gives nothing for it.
+  const Paths dot = parseLines(R"({"type":"LineString","coordinates":[[3,3],[3,3]]})");
+  ASSERT_EQ(dot.size(), 1u);
+  const Paths square = readPaths(kData + "square.geojson");
+  EXPECT_TRUE(clipLines(dot, square, FillRule::EvenOdd, LinePart::Inside).empty());
+  EXPECT_TRUE(clipLines(dot, square, FillRule::EvenOdd, LinePart::Outside).empty());
+}
+
+TEST(LineErrors, WrongStructure) {
+  expectInvalid([] { readLines(kData + "square.geojson"); },
+                {"square.geojson", "unsupported geometry type \"Polygon\"", "LineString"});
+  const struct {
+    const char* text;
+    const char* where;
+    const char* problem;
+  } cases[] = {
+      {"[1, 2]", "", "expected a JSON object"},
+      {R"({"type":"LineString"})", "geometry", "LineString without \"coordinates\""},
+      {R"({"type":"MultiLineString","coordinates":{}})", "geometry",
+       "MultiLineString coordinates must be an array"},
+      {R"({"type":"GeometryCollection"})", "geometry", "without a \"geometries\" array"},
+      {R"({"type":"GeometryCollection","geometries":[
+           {"type":"LineString","coordinates":[[0,0],[1,1]]},
+           {"type":"MultiPolygon","coordinates":[]}]})",
+       "geometry, member 1", "unsupported geometry type \"MultiPolygon\""},
+      {R"({"type":"Feature","properties":{}})", "feature", "without \"geometry\""},
+      {R"({"paths": [[[0,0],[1,1]], 7]})", "path 1", "expected an array of points"},
+      {R"({"paths": [[[0,0],[1,1,1,1]]]})", "path 0, point 1", "expected [x, y]"},
+  };
+  for (const auto& c : cases) {
+    SCOPED_TRACE(c.text);
+    expectInvalid([&] { parseLines(c.text, "bad.json"); }, {"bad.json: ", c.where, c.problem});
+  }
+}
+
+TEST(LineErrors, NaNAndNonNumbersNameTheLine) {
+  // Python's json.dumps writes NaN as a bare NaN, which is not JSON.
+  expectInvalid([] { readLines(kData + "lines_nan.json"); },
+                {"lines_nan.json", "not valid JSON", "line 1"});
+  expectInvalid(
+      [] {
+        parseLines(R"({"type":"FeatureCollection","features":[
+          {"type":"Feature","geometry":{"type":"LineString","coordinates":[[0,0],[1,1]]}},
+          {"type":"Feature","geometry":{"type":"MultiLineString",
+                                        "coordinates":[[[0,0],[1,1]],[["NaN",0],[1,1]]]}}]})",
+                   "s.json");
+      },
+      {"s.json", "feature 1, line 1 (path 2), point 0", "x is not a number (string)"});
+  expectInvalid([] { parseLines(R"({"paths": [[[0,0],[1,null]]]})", "n.json"); },
+                {"n.json", "path 0, point 1", "y is not a number (null)"});
+  expectInvalid([] { readLines(kData + "no_such_file.json"); },
+                {"no_such_file.json", "cannot open"});
+  expectInvalid([] { readLines(kData + "bad_syntax.json"); },
+                {"bad_syntax.json", "not valid JSON"});
+}
+
+TEST(LineErrors, LineWithFewerThanTwoPoints) {
+  expectInvalid([] { parseLines(R"({"paths": [[[0,0],[1,1]], [[2,2]]]})", "p.json"); },
+                {"p.json", "path 1", "line has fewer than 2 points"});
+  expectInvalid([] { parseLines(R"({"type":"LineString","coordinates":[]})", "q.json"); },
+                {"q.json", "geometry, line 0 (path 0)", "fewer than 2 points"});
+  ReadOptions lenient;
+  lenient.allowDegenerateRings = true;
+  const Paths kept = parseLines(R"({"paths": [[[0,0],[4,0]], [[2,2]], []]})", "p.json", lenient);
+  ASSERT_EQ(kept.size(), 3u);
+  // The core gives nothing for them, as the header promises.
+  const Paths square = readPaths(kData + "square.geojson");
+  EXPECT_EQ(clipLines(kept, square, FillRule::EvenOdd), (Paths{{{0, 0}, {4, 0}}}));
+}
+
+TEST(LinesToGeoJson, MultiLineStringWithLengthAndCountRoundTrips) {
+  const Paths lines = {
+      {{0, 0}, {3, 4}, {3, 10}}, {{1.5, -2.25}, {1.5, 0}}, {{5, 5}, {6, 5}, {5, 5}}};
+  const json root = json::parse(linesToGeoJson(lines));
+  EXPECT_EQ(root.at("type"), "FeatureCollection");
+  ASSERT_EQ(root.at("features").size(), 1u);
+  const json& feature = root.at("features")[0];
+  EXPECT_EQ(feature.at("type"), "Feature");
+  EXPECT_EQ(feature.at("geometry").at("type"), "MultiLineString");
+  EXPECT_EQ(feature.at("geometry").at("coordinates").size(), 3u);
+  EXPECT_EQ(feature.at("geometry").at("coordinates")[2].size(), 3u);  // no point added or dropped
+  EXPECT_DOUBLE_EQ(feature.at("properties").at("length").get<double>(), (5 + 6) + 2.25 + 2);
+  EXPECT_EQ(feature.at("properties").at("lines").get<int>(), 3);
+  EXPECT_EQ(parseLines(linesToGeoJson(lines)), lines);
+  EXPECT_EQ(parseLines(linesToGeoJson(lines, 2)), lines);
+}
+
+TEST(LinesToGeoJson, NoLinesIsAnEmptyMultiLineString) {
+  const json feature = json::parse(linesToGeoJson({})).at("features")[0];
+  EXPECT_EQ(feature.at("geometry").at("type"), "MultiLineString");
+  EXPECT_TRUE(feature.at("geometry").at("coordinates").empty());
+  EXPECT_EQ(feature.at("properties").at("length"), 0.0);
+  EXPECT_EQ(feature.at("properties").at("lines"), 0);
+  EXPECT_TRUE(parseLines(linesToGeoJson({})).empty());
+}
+
+TEST(WriteLinesGeoJson, WritesFileAndLeavesNoTemporary) {
+  const std::string dir = uniqueTempDir("write_lines");
+  const std::string file = dir + "/lines.geojson";
+  const Paths lines = readLines(kData + "lines_cross.geojson");
+  writeLinesGeoJson(lines, file);
+  EXPECT_EQ(readLines(file), lines);
+  std::size_t entries = 0;
+  for ([[maybe_unused]] const auto& entry : fs::directory_iterator(dir)) ++entries;
+  EXPECT_EQ(entries, 1u);
+  EXPECT_THROW(writeLinesGeoJson(lines, dir + "/missing/lines.geojson"), Error);
+  EXPECT_FALSE(fs::exists(dir + "/missing"));
+  fs::remove_all(dir);
+}
+
+TEST(ClipLinesInputs, InsideAndOutsideOfASquare) {
+  const Paths lines = readLines(kData + "lines_cross.geojson");
+  const Paths square = readPaths(kData + "square.geojson");
+  // The square [0, 10]^2 is closed: the part of line 2 along its top edge is inside.
+  EXPECT_EQ(clipLinesInputs(lines, "l", square, "r", FillRule::EvenOdd),
+            (Paths{{{0, 5}, {5, 5}, {5, 10}}, {{2, 2}, {8, 2}}, {{0, 10}, {10, 10}}}));
+  EXPECT_EQ(
+      clipLinesInputs(lines, "l", square, "r", FillRule::EvenOdd, LinePart::Outside),
+      (Paths{{{-5, 5}, {0, 5}}, {{5, 10}, {5, 15}}, {{-2, 10}, {0, 10}}, {{10, 10}, {12, 10}}}));
+}
+
+TEST(ClipLinesInputs, CoreErrorsNameTheSource) {
+  const std::string far = kData + "out_of_range.json";
+  const Paths farLines = readLines(far);
+  const Paths lines = readLines(kData + "lines_cross.geojson");
+  const Paths square = readPaths(kData + "square.geojson");
+  expectInvalid(
+      [&] { clipLinesInputs(farLines, far, square, "square.geojson", FillRule::EvenOdd); },
+      {"out_of_range.json: path 1, vertex 1", "outside the supported range"});
+  expectInvalid(
+      [&] { clipLinesInputs(lines, "lines.geojson", readPaths(far), far, FillRule::NonZero); },
+      {"out_of_range.json: path 1, vertex 1", "outside the supported range"});
+}
+
 }  // namespace
 }  // namespace roiclip::io

@@ -1,4 +1,4 @@
-// roiclip::io: reading and writing path sets as GeoJSON or plain JSON.
+// roiclip::io: reading and writing path sets and open polylines as GeoJSON or plain JSON.
 //
 // Coordinates are taken as they are (no projection): x = first number, y = second number, in the
 // same y-down pixel convention as the rest of roiclip (see roiclip/geometry.hpp).
@@ -14,9 +14,10 @@ namespace roiclip::io {
 
 /// How strictly rings are checked while reading.
 struct ReadOptions {
-  /// When false (the default), a ring with fewer than 3 distinct points is an InvalidInputError.
-  /// When true, such rings are kept as they are (the core ignores them); conformance data from
-  /// other projects contains them on purpose.
+  /// When false (the default), a ring with fewer than 3 distinct points is an InvalidInputError,
+  /// and so is a polyline with fewer than 2 points (parseLines()). When true, such rings and lines
+  /// are kept as they are (the core ignores them); conformance data from other projects contains
+  /// them on purpose.
   bool allowDegenerateRings = false;
 };
 
@@ -38,6 +39,29 @@ Paths parsePaths(const std::string& text, const std::string& source = "<string>"
 /// parsePaths() on the contents of a file. @throws InvalidInputError also when the file cannot
 /// be read; the message names the file.
 Paths readPaths(const std::string& file, const ReadOptions& options = {});
+
+/// Read open polylines (for clipLines()) from text holding either
+///  - GeoJSON: a LineString or MultiLineString, or a Feature, FeatureCollection or
+///    GeometryCollection of them (collections may nest); every line string is one polyline; or
+///  - plain JSON: {"paths": [[[x, y], ...], ...]}.
+/// Points are taken as they are: a last point that repeats the first is kept, since the core reads
+/// such a polyline as a loop. Features with a null geometry contribute nothing.
+/// A line needs 2 points (as GeoJSON requires of a LineString); one of 2 or more points that are
+/// all equal is valid and simply gives nothing when clipped, like any polyline that the core finds
+/// shorter than one grid step.
+/// @param text   the JSON text.
+/// @param source name of the input used in error messages (a file name, or "<string>").
+/// @throws InvalidInputError (message starts with `source`) on unparsable JSON, a wrong
+///         structure (including polygons: a region is not a line), a coordinate that is not a
+///         finite number, or a line with fewer than 2 points (unless options allow it); the
+///         message names the line ("path i" in plain JSON; in GeoJSON e.g. "feature 2, line 0
+///         (path 5)", with the flat index the core's messages use).
+Paths parseLines(const std::string& text, const std::string& source = "<string>",
+                 const ReadOptions& options = {});
+
+/// parseLines() on the contents of a file. @throws InvalidInputError also when the file cannot
+/// be read; the message names the file.
+Paths readLines(const std::string& file, const ReadOptions& options = {});
 
 /// A GeoJSON feature with its structure kept: a list of polygons, each a list of rings (ring 0
 /// the outer ring, then the inner rings), rings without the repeated closing point.
@@ -67,6 +91,17 @@ std::string toGeoJson(const PolygonSet& set, int indent = -1);
 /// @throws Error when the file cannot be written.
 void writeGeoJson(const PolygonSet& set, const std::string& file, int indent = -1);
 
+/// Polylines (e.g. clipLines() output) as GeoJSON text: a FeatureCollection with one Feature
+/// whose geometry is a MultiLineString (one line string per polyline, points as they are) and
+/// properties "length" (the total Euclidean length, in coordinate units, i.e. px) and "lines" (the
+/// number of polylines).
+/// @param indent spaces per indentation level, or -1 for a single line.
+std::string linesToGeoJson(const Paths& lines, int indent = -1);
+
+/// Write linesToGeoJson(lines) to `file` atomically, as writeGeoJson().
+/// @throws Error when the file cannot be written.
+void writeLinesGeoJson(const Paths& lines, const std::string& file, int indent = -1);
+
 /// simplify() on paths read from `source`; an InvalidInputError from the core (coordinate out of
 /// range) is rethrown with `source` in front of its message.
 PolygonSet simplifyInput(const Paths& paths, const std::string& source, FillRule rule,
@@ -77,5 +112,11 @@ PolygonSet simplifyInput(const Paths& paths, const std::string& source, FillRule
 PolygonSet clipInputs(ClipOp op, const Paths& subject, const std::string& subjectSource,
                       const Paths& clipPaths, const std::string& clipSource, FillRule subjectRule,
                       FillRule clipRule, const Grid& grid = {});
+
+/// clipLines() on polylines and region paths read from two sources; core InvalidInputErrors
+/// ("line path i" / "clip path i") are rethrown naming the source they concern ("SOURCE: path i").
+Paths clipLinesInputs(const Paths& lines, const std::string& linesSource, const Paths& region,
+                      const std::string& regionSource, FillRule regionRule,
+                      LinePart part = LinePart::Inside, const Grid& grid = {});
 
 }  // namespace roiclip::io
