@@ -197,6 +197,12 @@ std::vector<Detection> Detector::detect(cv::InputArray input) const {
         matTypeName(image));
   }
 
+  // libapriltag 3.3 crashes (out-of-bounds read in apriltag_quad_thresh) on images whose
+  // decimated height is below 3 rows (1x1, 100x2, 100x4 at decimate 2, ...). No tag fits in
+  // so few pixels anyway.
+  const int decimate = std::max(1, static_cast<int>(std::ceil(impl_->options.quadDecimate)));
+  if (std::min(image.rows, image.cols) < 3 * decimate) return {};
+
   cv::Mat gray;
   if (image.channels() == 3) {
     cv::cvtColor(image, gray, cv::COLOR_BGR2GRAY);

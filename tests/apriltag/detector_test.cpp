@@ -181,6 +181,21 @@ TEST(AprilTagDetector, NeverModifiesTheInput) {
   }
 }
 
+// libapriltag itself crashes on images under 3 rows after decimation; detect() answers
+// "no tags" for them (found with a 1x1 PNG through `roiclip run`).
+TEST(AprilTagDetector, TinyImagesHaveNoTagsAndDoNotCrash) {
+  for (const float decimate : {1.0f, 2.0f, 4.0f}) {
+    ra::DetectorOptions options;
+    options.quadDecimate = decimate;
+    const ra::Detector detector(options);
+    for (const cv::Size size : {cv::Size(1, 1), cv::Size(2, 2), cv::Size(100, 1), cv::Size(100, 2),
+                                cv::Size(100, 4), cv::Size(100, 8), cv::Size(1, 100)}) {
+      EXPECT_TRUE(detector.detect(cv::Mat(size, CV_8UC1, cv::Scalar(128))).empty())
+          << size << " at decimate " << decimate;
+    }
+  }
+}
+
 TEST(AprilTagDetector, RespectsTheRowStepOfAView) {
   const cv::Mat big = canvasWithTag(9, 120, 100);
   const cv::Mat view = big(cv::Rect(101, 83, 180, 170));  // not continuous: step > cols
