@@ -5,6 +5,7 @@
 
 #include <atomic>
 #include <csignal>
+#include <cstdint>
 #include <cstdio>
 #include <fstream>
 #include <iomanip>
@@ -27,7 +28,8 @@ inline void onSignal(int) {
 }
 
 constexpr const char* kRunHelp = R"(
-Per image: read it (PNG, JPEG, TIFF, BMP, ...; 8/16-bit; gray or colour), detect AprilTags,
+Per image: read it (PNG, JPEG, TIFF, BMP, ...; 8/16-bit or float; gray, gray+alpha, colour;
+PNG/JPEG/TIFF/WebP headers are checked against --max-pixels before decoding), detect AprilTags,
 build the ROI, find contours (RETR_CCOMP: every outer contour with its holes), clip each one
 exactly against the ROI, and check the vector result against the raster route (subject mask AND
 ROI mask) off a boundary band. Writes into the output folder, each file atomically:
@@ -58,7 +60,8 @@ Exit codes:
        bad --roi/--board/--config
   3    the output folder cannot be created or written
   4    internal error (a bug in roiclip: please report the input)
-  5    at least one image failed (unreadable), had no ROI (no tags / missing id) or failed its
+  5    at least one image failed (unreadable, not an image, truncated, more pixels than
+       --max-pixels, unsupported type), had no ROI (no tags / missing id) or failed its
        mask check; see summary.csv; the other images were processed
   130  interrupted (Ctrl-C); finished images are complete, summary covers them
 )";
@@ -89,6 +92,11 @@ class RunCommand {
         ->capture_default_str();
     cmd_->add_option("--fill-rule", fillRule_, "fill rule of the contours")->capture_default_str();
     cmd_->add_option("--roi-fill-rule", roiFillRule_, "fill rule of the ROI")
+        ->capture_default_str();
+    cmd_->add_option("--max-pixels", maxPixels_,
+                     "refuse images with more pixels (width x height; read from the file's "
+                     "header before decoding; 0 = no limit)")
+        ->check(CLI::NonNegativeNumber)
         ->capture_default_str();
     cmd_->add_option("-j,--jobs", jobs_, "images in parallel (0 = all cores)")
         ->check(CLI::NonNegativeNumber)
@@ -158,6 +166,7 @@ class RunCommand {
       p.contours.openEdges = edges_;
       p.subjectFillRule = roiclip::parseFillRule(fillRule_.c_str());
       p.roiFillRule = roiclip::parseFillRule(roiFillRule_.c_str());
+      p.maxPixels = maxPixels_;
     } catch (const roiclip::InvalidInputError& e) {
       std::cerr << "roiclip run: error: " << e.what() << "\n";
       return 2;
@@ -240,6 +249,7 @@ class RunCommand {
   double minArea_ = 0.0;
   std::string fillRule_ = "evenodd";
   std::string roiFillRule_ = "evenodd";
+  std::int64_t maxPixels_ = roiclip::batch::kDefaultMaxPixels;
   int jobs_ = 0;
   bool recursive_ = false;
   bool force_ = false;

@@ -53,6 +53,8 @@ const char* toString(FailureKind kind) {
       return "none";
     case FailureKind::Unreadable:
       return "unreadable";
+    case FailureKind::TooLarge:
+      return "too-large";
     case FailureKind::NoTags:
       return "no-tags";
     case FailureKind::MissingTags:
@@ -106,12 +108,10 @@ std::int64_t ImageResult::offBandMismatches() const {
   return n;
 }
 
-cv::Mat toGray8(const cv::Mat& image, const std::string& source) {
-  if (image.empty()) throw InvalidInputError(source + ": empty image");
-  const int channels = image.channels();
-  if (channels != 1 && channels != 3 && channels != 4) {
-    throw InvalidInputError(source + ": unsupported channel count " + std::to_string(channels));
-  }
+namespace {
+
+// 8-bit copy (or view) of any depth cv::imread returns: 16-bit scaled by 255/65535, float by 255.
+cv::Mat toDepth8(const cv::Mat& image, const std::string& source) {
   cv::Mat depth8;
   switch (image.depth()) {
     case CV_8U:
@@ -127,21 +127,26 @@ cv::Mat toGray8(const cv::Mat& image, const std::string& source) {
     default:
       throw InvalidInputError(source + ": unsupported pixel depth (need 8-bit, 16-bit or float)");
   }
-  if (channels == 1) return depth8;
-  cv::Mat gray;
-  cv::cvtColor(depth8, gray, channels == 3 ? cv::COLOR_BGR2GRAY : cv::COLOR_BGRA2GRAY);
-  return gray;
+  return depth8;
 }
 
-cv::Mat readImage(const std::string& path) {
-  cv::Mat image;
-  try {
-    image = cv::imread(path, cv::IMREAD_UNCHANGED);
-  } catch (const cv::Exception& e) {
-    throw InvalidInputError(path + ": cannot decode image (" + e.msg + ")");
+}  // namespace
+
+cv::Mat toGray8(const cv::Mat& image, const std::string& source) {
+  if (image.empty()) throw InvalidInputError(source + ": empty image");
+  const int channels = image.channels();
+  if (channels < 1 || channels > 4) {
+    throw InvalidInputError(source + ": unsupported channel count " + std::to_string(channels));
   }
-  if (image.empty()) throw InvalidInputError(path + ": cannot read or decode image");
-  return image;
+  const cv::Mat depth8 = toDepth8(image, source);
+  if (channels == 1) return depth8;
+  cv::Mat gray;
+  if (channels == 2) {  // gray + alpha
+    cv::extractChannel(depth8, gray, 0);
+    return gray;
+  }
+  cv::cvtColor(depth8, gray, channels == 3 ? cv::COLOR_BGR2GRAY : cv::COLOR_BGRA2GRAY);
+  return gray;
 }
 
 std::vector<Paths> detectContours(const cv::Mat& gray, const ContourOptions& options,
@@ -219,6 +224,13 @@ struct Processor::Impl {
 
   void run(const cv::Mat& image, ImageResult& r) const {
     const auto start = Clock::now();
+    const auto pixels = static_cast<std::int64_t>(image.total());
+    if (options.maxPixels > 0 && pixels > options.maxPixels) {
+      throw ImageTooLargeError("image " + std::to_string(image.cols) + " x " +
+                               std::to_string(image.rows) + " = " + std::to_string(pixels) +
+                               " pixels, more than the limit of " +
+                               std::to_string(options.maxPixels));
+    }
     const cv::Mat gray = toGray8(image);
     r.width = gray.cols;
     r.height = gray.rows;
@@ -329,6 +341,9 @@ ImageResult Processor::process(const cv::Mat& image) const {
     return r;
   } catch (const std::bad_alloc&) {
     throw;
+  } catch (const ImageTooLargeError& e) {
+    r.failure = FailureKind::TooLarge;
+    r.reason = e.what();
   } catch (const InvalidInputError& e) {
     r.failure = FailureKind::InvalidInput;
     r.reason = e.what();
@@ -364,20 +379,13 @@ ImageResult processImage(const cv::Mat& image, const RunOptions& options) {
 namespace {
 
 cv::Mat toBgr8(const cv::Mat& image) {
-  cv::Mat depth8;
-  switch (image.depth()) {
-    case CV_8U:
-      depth8 = image;
-      break;
-    case CV_16U:
-      image.convertTo(depth8, CV_8U, 255.0 / 65535.0);
-      break;
-    default:
-      image.convertTo(depth8, CV_8U, 255.0);
-      break;
-  }
+  const cv::Mat depth8 = toDepth8(image, "image");
   cv::Mat bgr;
-  if (depth8.channels() == 1) {
+  if (depth8.channels() == 2) {  // gray + alpha
+    cv::Mat gray;
+    cv::extractChannel(depth8, gray, 0);
+    cv::cvtColor(gray, bgr, cv::COLOR_GRAY2BGR);
+  } else if (depth8.channels() == 1) {
     cv::cvtColor(depth8, bgr, cv::COLOR_GRAY2BGR);
   } else if (depth8.channels() == 4) {
     cv::cvtColor(depth8, bgr, cv::COLOR_BGRA2BGR);

@@ -163,14 +163,19 @@ class Runner {
     ImageResult result;
     cv::Mat image;
     try {
-      image = readImage(job.image.string());
+      image = readImage(job.image.string(), options_.process.maxPixels);
+    } catch (const ImageTooLargeError& e) {
+      result.status = Status::Failed;
+      result.failure = FailureKind::TooLarge;
+      result.reason = e.what();
     } catch (const InvalidInputError& e) {
       result.status = Status::Failed;
       result.failure = FailureKind::Unreadable;
       result.reason = e.what();
     }
-    if (!image.empty()) {
-      result = processor.process(image);
+    if (!image.empty()) result = processor.process(image);
+    // An overlay only for images the pipeline could read (it sets the size then).
+    if (result.width > 0) {
       writeFileAtomic(overlayFile, encodePng(renderOverlay(image, result), overlayFile.string()));
       if (options_.writeMasks && !result.roi.empty()) {
         writeFileAtomic(maskFile,

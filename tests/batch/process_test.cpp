@@ -220,7 +220,12 @@ TEST(BatchImageTypes, SixteenBitAndColourGiveTheSameResultAsGray) {
     EXPECT_DOUBLE_EQ(r.clippedArea, ref.clippedArea);
   }
   EXPECT_THROW(rb::toGray8(cv::Mat(), "x"), roiclip::InvalidInputError);
-  EXPECT_THROW(rb::toGray8(cv::Mat(4, 4, CV_8UC2), "x"), roiclip::InvalidInputError);
+  // Two channels are gray + alpha: the gray channel is used.
+  cv::Mat grayAlpha;
+  cv::merge(std::vector<cv::Mat>{gray, cv::Mat(gray.size(), CV_8UC1, cv::Scalar(255))}, grayAlpha);
+  EXPECT_EQ(cv::countNonZero(rb::toGray8(grayAlpha, "x") != gray), 0);
+  EXPECT_THROW(rb::toGray8(cv::Mat(4, 4, CV_8UC(5)), "x"), roiclip::InvalidInputError);
+  EXPECT_THROW(rb::toGray8(cv::Mat(4, 4, CV_32SC1), "x"), roiclip::InvalidInputError);
 }
 
 // --- failure paths ---------------------------------------------------------------------------

@@ -22,6 +22,7 @@
 
 #include <roiclip/apriltag/detector.hpp>
 #include <roiclip/apriltag/roi.hpp>
+#include <roiclip/batch/image_file.hpp>
 #include <roiclip/opencv/mask_check.hpp>
 #include <roiclip/roiclip.hpp>
 
@@ -75,6 +76,9 @@ struct RunOptions {
   FillRule subjectFillRule = FillRule::EvenOdd;  ///< for the contours (as cv::fillPoly draws)
   FillRule roiFillRule = FillRule::EvenOdd;      ///< for the ROI paths
   Grid grid{};
+  /// Images with more pixels (width x height) are refused (FailureKind::TooLarge); run() checks
+  /// the file's header before decoding (readImage). <= 0: no limit.
+  std::int64_t maxPixels = kDefaultMaxPixels;
 };
 
 /// Outcome of one image.
@@ -88,8 +92,18 @@ enum class Status {
 const char* toString(Status status);
 
 /// Why an image did not reach Status::Ok.
-enum class FailureKind { None, Unreadable, NoTags, MissingTags, InvalidInput, Internal, Mismatch };
-/// "none", "unreadable", "no-tags", "missing-tags", "invalid-input", "internal", "mismatch".
+enum class FailureKind {
+  None,
+  Unreadable,  ///< missing, empty, not an image, truncated or corrupt file
+  TooLarge,    ///< more pixels than RunOptions::maxPixels (refused before decoding)
+  NoTags,
+  MissingTags,
+  InvalidInput,  ///< an image type the pipeline cannot use, bad options, out-of-range input
+  Internal,
+  Mismatch,
+};
+/// "none", "unreadable", "too-large", "no-tags", "missing-tags", "invalid-input", "internal",
+/// "mismatch".
 const char* toString(FailureKind kind);
 
 /// One clipped contour: an outer contour from cv::findContours with its holes (RETR_CCOMP).
@@ -138,14 +152,11 @@ struct ImageResult {
   [[nodiscard]] std::int64_t offBandMismatches() const;
 };
 
-/// Convert any image cv::imread returns (8- or 16-bit, float; 1, 3 or 4 channels) to 8-bit gray.
-/// 16-bit is scaled by 255/65535, float by 255 (assumed in [0, 1]).
+/// Convert any image cv::imread returns (8- or 16-bit, float; 1, 3 or 4 channels; 2 channels
+/// are read as gray + alpha) to 8-bit gray. 16-bit is scaled by 255/65535, float by 255
+/// (assumed in [0, 1]; values outside saturate, NaN becomes 0).
 /// @throws InvalidInputError naming `source` if the image is empty or of an unsupported type.
 cv::Mat toGray8(const cv::Mat& image, const std::string& source = "image");
-
-/// Read an image file (PNG, JPEG, TIFF, BMP, ... whatever OpenCV's imgcodecs reads) unchanged.
-/// @throws InvalidInputError naming the file if it cannot be read or decoded.
-cv::Mat readImage(const std::string& path);
 
 /// Detect contours as `options` says (RETR_CCOMP, CHAIN_APPROX_NONE) and group each outer
 /// contour with its holes, oriented (outer negative, holes positive).
@@ -176,8 +187,9 @@ class Processor {
   Processor& operator=(Processor&&) noexcept;
 
   /// Run the pipeline on one image (any type toGray8 accepts; the overlay uses it as is).
-  /// Never throws for per-image problems: an empty or unsupported image gives Status::Failed,
-  /// missing tags Status::NoRoi, each with a reason; only std::bad_alloc propagates.
+  /// Never throws for per-image problems: an empty, unsupported or too large image gives
+  /// Status::Failed, missing tags Status::NoRoi, each with a reason; only std::bad_alloc
+  /// propagates.
   [[nodiscard]] ImageResult process(const cv::Mat& image) const;
 
   [[nodiscard]] const RunOptions& options() const;
