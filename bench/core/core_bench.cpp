@@ -24,6 +24,7 @@
 
 #include "adapters.hpp"
 #include "alloc_counter.hpp"
+#include "lines_bench.hpp"
 #include "workloads.hpp"
 
 namespace roiclip::bench {
@@ -380,6 +381,7 @@ int main(int argc, char** argv) {
   }
   argc = kept;
   roiclip::bench::registerAll();
+  roiclip::bench::registerLines();
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
   benchmark::RunSpecifiedBenchmarks();
