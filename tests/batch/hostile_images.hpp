@@ -1,7 +1,7 @@
 // Hostile image files for `roiclip run`, made from one good scene: truncated PNG and JPEG, an
-// empty file, a 1x1 image, decompression bombs (headers claiming huge sizes, and a genuinely
-// decodable 20000 x 20000 PNG of ~50 KB), 16-bit, float, 2- and 4-channel images, a text file
-// named .png and a PNG named .jpg. Each comes with what a run must report for it. Used by
+// empty file, a 1x1 image, decompression bombs (PNG, JPEG and TIFF headers claiming huge sizes, and
+// a genuinely decodable 20000 x 20000 PNG of ~50 KB), 16-bit, float, 2- and 4-channel images, a
+// text file named .png and a PNG named .jpg. Each comes with what a run must report for it. Used by
 // hostile_test.cpp and by roiclip_batch_hostile_images (the folder the memory figures in the
 // README were measured on).
 #pragma once
@@ -121,6 +121,27 @@ inline std::string hugeJpeg(const cv::Mat& small, std::uint16_t width, std::uint
   return jpeg;
 }
 
+// A little-endian TIFF (as OpenCV writes them) whose first directory claims width x height.
+inline std::string hugeTiff(const cv::Mat& small, std::uint16_t width, std::uint16_t height) {
+  std::string tiff = encode(".tiff", small);
+  const auto u16 = [&](std::size_t at) {
+    return static_cast<std::uint32_t>(static_cast<unsigned char>(tiff[at])) |
+           static_cast<std::uint32_t>(static_cast<unsigned char>(tiff[at + 1])) << 8;
+  };
+  const std::size_t ifd = u16(4) | u16(6) << 16;
+  for (std::size_t e = 0; e < u16(ifd); ++e) {
+    const std::size_t entry = ifd + 2 + 12 * e;
+    const std::uint32_t tag = u16(entry);
+    if (tag != 256 && tag != 257) continue;  // ImageWidth, ImageLength
+    const std::uint16_t v = tag == 256 ? width : height;
+    tiff[entry + 2] = 3;  // SHORT, value in the entry
+    tiff[entry + 3] = 0;
+    tiff.replace(entry + 8, 4,
+                 std::string{static_cast<char>(v & 0xff), static_cast<char>(v >> 8), '\0', '\0'});
+  }
+  return tiff;
+}
+
 }  // namespace hostile_detail
 
 /// Write the hostile files into `dir` (which must exist) from `scene` (a BGR 8-bit image with
@@ -156,6 +177,8 @@ inline std::vector<HostileImage> writeHostileImages(const std::filesystem::path&
       {"", "failed", "too-large", "PNG header says 20000 x 20000 = 400000000 pixels"});
   add("bomb_header.jpg", hugeJpeg(gray(cv::Rect(0, 0, 64, 64)), 60000, 60000),
       {"", "failed", "too-large", "JPEG header says 60000 x 60000"});
+  add("bomb_header.tiff", hugeTiff(gray(cv::Rect(0, 0, 64, 64)), 60000, 60000),
+      {"", "failed", "too-large", "TIFF header says 60000 x 60000 = 3600000000 pixels"});
   // Types: 16-bit, float, gray + alpha, BGRA; all processable.
   cv::Mat gray16, grayFloat, bgra;
   gray.convertTo(gray16, CV_16U, 257.0);

@@ -441,6 +441,14 @@ TEST(BatchCli, ExitCodes) {
   EXPECT_NE(readText(t / "stderr.txt").find("b.png: failed"), std::string::npos);
   fs::remove(t / "in" / "b.png");
 
+  // --max-pixels: refused from the header, reported as too-large; 0 lifts the limit. The limit
+  // guards decoding and changes no result, so up-to-date images are still skipped.
+  EXPECT_EQ(cli("run " + in + out + " --max-pixels 1000", t), 0);
+  EXPECT_EQ(cli("run " + in + out + " --max-pixels 1000 --force", t), 5);
+  EXPECT_NE(readText(t / "out" / "summary.csv").find("a.png,failed,too-large,"), std::string::npos);
+  EXPECT_EQ(cli("run " + in + out + " --max-pixels 0", t), 0);
+  EXPECT_EQ(cli("run " + in + out + " --max-pixels -1", t), 1);
+
   // --config: its options apply, the command line wins.
   std::ofstream(t / "run.json") << R"({"roi": "tags:0,1,2,9", "force": true, "jobs": 1})";
   const std::string config = " --config '" + (t / "run.json").string() + "'";
@@ -455,7 +463,7 @@ TEST(BatchCli, ExitCodes) {
   EXPECT_EQ(cli("run --help", t), 0);
   const std::string help = readText(t / "stdout.txt");
   for (const char* needle : {"Exit codes", "--roi", "board:inspection", "--jobs", "--force",
-                             "--recursive", "--config", "130"}) {
+                             "--recursive", "--config", "--max-pixels", "130"}) {
     EXPECT_NE(help.find(needle), std::string::npos) << needle;
   }
 }

@@ -77,7 +77,8 @@ struct RunOptions {
   FillRule roiFillRule = FillRule::EvenOdd;      ///< for the ROI paths
   Grid grid{};
   /// Images with more pixels (width x height) are refused (FailureKind::TooLarge); run() checks
-  /// the file's header before decoding (readImage). <= 0: no limit.
+  /// the file's header before decoding (readImage). <= 0: no limit. Not part of optionsKey():
+  /// it guards decoding and changes no result, so up-to-date outputs stay up to date.
   std::int64_t maxPixels = kDefaultMaxPixels;
 };
 
