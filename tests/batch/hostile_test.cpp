@@ -112,6 +112,15 @@ TEST_F(Hostile, HeadersAreReadWithoutDecoding) {
   EXPECT_EQ(floatTiff->format, "tiff");
   EXPECT_EQ(floatTiff->width, header("good.png")->width);
   EXPECT_EQ(header("truncated.jpg")->format, "jpeg");
+  std::vector<uchar> webp;
+  ASSERT_TRUE(cv::imencode(".webp", cv::Mat(30, 40, CV_8UC3, cv::Scalar(1, 2, 3)), webp));
+  std::ofstream(dir_ / "small.webp", std::ios::binary)
+      .write(reinterpret_cast<const char*>(webp.data()), static_cast<std::streamsize>(webp.size()));
+  const auto w = rb::readImageHeader((dir_ / "small.webp").string());
+  ASSERT_TRUE(w);
+  EXPECT_EQ(w->format, "webp");
+  EXPECT_EQ(w->width, 40);
+  EXPECT_EQ(w->height, 30);
   EXPECT_FALSE(header("text.png"));
   EXPECT_FALSE(header("empty.png"));
   EXPECT_FALSE(header("missing.png"));
