@@ -4,7 +4,11 @@
 // many result pieces leave as arrive. Walking unused pieces and pushing vertices on a stack,
 // a vertex that is already on the stack closes a contour, which is popped. A popped contour
 // never repeats a vertex and pieces only meet at vertices, so it is a simple ring; rings that
-// touch at a vertex come out as separate rings.
+// touch at a vertex come out as separate rings. Where several rings share a vertex, the walk
+// leaves along the piece next clockwise to the one it arrived on, so the rings only touch
+// there; a free choice can make two rings cross at that vertex (found by fuzz_simplify).
+#include <algorithm>
+
 #include <roiclip/error.hpp>
 
 #include "pipeline.hpp"
@@ -13,6 +17,37 @@ namespace roiclip::detail {
 namespace {
 
 IPoint direction(const EdgePiece& p) { return {p.lineB.x - p.lineA.x, p.lineB.y - p.lineA.y}; }
+
+// A piece seen from one of its ends: the direction from that end along the piece.
+struct Ray {
+  IPoint d;
+  int piece = -1;
+  bool outgoing = false;
+};
+
+// Counter-clockwise order of directions, starting at the positive x axis (exact).
+bool ccwBefore(IPoint a, IPoint b) {
+  const auto half = [](IPoint d) { return d.y > 0 || (d.y == 0 && d.x > 0) ? 0 : 1; };
+  if (half(a) != half(b)) return half(a) < half(b);
+  return crossSign(a, b) > 0;
+}
+
+// Compressed rows: for each vertex, the result pieces whose `end(piece)` is that vertex.
+template <class End>
+void buildRows(const Arrangement& arrangement, int vertexCount, End end, std::vector<int>& first,
+               std::vector<int>& list) {
+  const auto& sides = arrangement.sides;
+  first.assign(std::size_t(vertexCount) + 1, 0);
+  for (std::size_t e = 0; e < sides.size(); ++e) {
+    if (sides[e] != Side::None) ++first[std::size_t(end(int(e))) + 1];
+  }
+  for (int v = 0; v < vertexCount; ++v) first[std::size_t(v) + 1] += first[std::size_t(v)];
+  list.resize(std::size_t(first[std::size_t(vertexCount)]));
+  std::vector<int> next(first.begin(), first.end() - 1);
+  for (std::size_t e = 0; e < sides.size(); ++e) {
+    if (sides[e] != Side::None) list[std::size_t(next[std::size_t(end(int(e)))]++)] = int(e);
+  }
+}
 
 }  // namespace
 
@@ -23,26 +58,49 @@ Contours traceContours(const Arrangement& arrangement) {
   auto from = [&](int e) { return sides[e] == Side::Above ? pieces[e].left : pieces[e].right; };
   auto to = [&](int e) { return sides[e] == Side::Above ? pieces[e].right : pieces[e].left; };
 
-  // Outgoing result pieces per vertex (compressed rows).
-  std::vector<int> first(vertexCount + 1, 0);
-  for (std::size_t e = 0; e < pieces.size(); ++e) {
-    if (sides[e] != Side::None) ++first[from(int(e)) + 1];
-  }
-  for (int v = 0; v < vertexCount; ++v) first[v + 1] += first[v];
-  std::vector<int> outgoing(first[vertexCount]);
-  std::vector<int> next(first.begin(), first.end() - 1);
-  for (std::size_t e = 0; e < pieces.size(); ++e) {
-    if (sides[e] != Side::None) outgoing[next[from(int(e))]++] = int(e);
-  }
-  std::vector<int> cursor(first.begin(), first.end() - 1);
-  std::vector<char> used(pieces.size(), 0);
-  auto nextUnused = [&](int v) {
-    while (cursor[v] < first[v + 1]) {
-      const int e = outgoing[cursor[v]++];
-      if (!used[e]) return e;
+  std::vector<int> outFirst, outgoing, inFirst, incoming;
+  buildRows(arrangement, vertexCount, from, outFirst, outgoing);
+  buildRows(arrangement, vertexCount, to, inFirst, incoming);
+
+  // Arriving at a vertex along a piece, the walk goes on along the outgoing piece next to it
+  // clockwise: both bound the same filled sector, so rings that share a vertex touch there
+  // without crossing. Around a vertex incoming and outgoing pieces alternate (each has the
+  // filled side on its left), so this pairs them one to one.
+  std::vector<int> pairOut(pieces.size(), -1);
+  std::vector<Ray> rays;
+  for (int v = 0; v < vertexCount; ++v) {
+    const int outs = outFirst[v + 1] - outFirst[v];
+    if (outs != inFirst[v + 1] - inFirst[v]) {
+      throw InternalError("traceContours: result boundary is not balanced at a vertex");
     }
-    return -1;
-  };
+    if (outs == 0) continue;
+    if (outs == 1) {
+      pairOut[std::size_t(incoming[std::size_t(inFirst[v])])] = outgoing[std::size_t(outFirst[v])];
+      continue;
+    }
+    rays.clear();
+    const auto along = [&](int e) {
+      const IPoint d = direction(pieces[std::size_t(e)]);
+      return pieces[std::size_t(e)].left == v ? d : IPoint{-d.x, -d.y};
+    };
+    for (int i = outFirst[v]; i < outFirst[v + 1]; ++i) {
+      rays.push_back({along(outgoing[std::size_t(i)]), outgoing[std::size_t(i)], true});
+    }
+    for (int i = inFirst[v]; i < inFirst[v + 1]; ++i) {
+      rays.push_back({along(incoming[std::size_t(i)]), incoming[std::size_t(i)], false});
+    }
+    std::sort(rays.begin(), rays.end(),
+              [](const Ray& a, const Ray& b) { return ccwBefore(a.d, b.d); });
+    for (std::size_t i = 0; i < rays.size(); ++i) {
+      if (rays[i].outgoing) continue;
+      const Ray& clockwise = rays[(i + rays.size() - 1) % rays.size()];
+      if (!clockwise.outgoing) {
+        throw InternalError("traceContours: pieces around a vertex do not alternate");
+      }
+      pairOut[std::size_t(rays[i].piece)] = clockwise.piece;
+    }
+  }
+  std::vector<char> used(pieces.size(), 0);
 
   Contours result;
   result.ringOfPiece.assign(pieces.size(), -1);
@@ -54,52 +112,51 @@ Contours traceContours(const Arrangement& arrangement) {
     stackV.assign(1, v0);
     stackE.clear();
     onStack[v0] = 0;
-    int cur = v0;
+    int e = int(start);
     for (;;) {
-      const int e = nextUnused(cur);
-      if (e < 0) {
-        if (stackV.size() == 1) break;
-        throw InternalError("traceContours: result boundary is not balanced at a vertex");
-      }
-      used[e] = 1;
+      used[std::size_t(e)] = 1;
       const int w = to(e);
       stackE.push_back(e);
       if (onStack[w] < 0) {
         onStack[w] = int(stackV.size());
         stackV.push_back(w);
-        cur = w;
-        continue;
-      }
-      // Pop the contour stackV[k..], closed by e.
-      const std::size_t k = std::size_t(onStack[w]);
-      const std::size_t n = stackV.size() - k;
-      TracedRing ring;
-      int minVertex = stackV[k];
-      std::size_t minAt = 0;
-      for (std::size_t i = 0; i < n; ++i) {
-        const int v = stackV[k + i];
-        if (v < minVertex) {
-          minVertex = v;
-          minAt = i;
+      } else {
+        // Pop the contour stackV[k..], closed by e.
+        const std::size_t k = std::size_t(onStack[w]);
+        const std::size_t n = stackV.size() - k;
+        TracedRing ring;
+        int minVertex = stackV[k];
+        std::size_t minAt = 0;
+        for (std::size_t i = 0; i < n; ++i) {
+          const int v = stackV[k + i];
+          if (v < minVertex) {
+            minVertex = v;
+            minAt = i;
+          }
+          const int in = stackE[k + (i + n - 1) % n];
+          const int out = stackE[k + i];
+          if (crossSign(direction(pieces[in]), direction(pieces[out])) != 0) {
+            ring.vertices.push_back(v);
+          }
         }
-        const int in = stackE[k + (i + n - 1) % n];
-        const int out = stackE[k + i];
-        if (crossSign(direction(pieces[in]), direction(pieces[out])) != 0) {
-          ring.vertices.push_back(v);
-        }
+        const int inMin = stackE[k + (minAt + n - 1) % n];
+        const int outMin = stackE[k + minAt];
+        ring.referencePiece = std::min(inMin, outMin);
+        ring.hole = sides[ring.referencePiece] == Side::Below;
+        if (ring.vertices.size() < 3) throw InternalError("traceContours: degenerate ring");
+        for (std::size_t i = 0; i < n; ++i)
+          result.ringOfPiece[stackE[k + i]] = int(result.rings.size());
+        result.rings.push_back(std::move(ring));
+        for (std::size_t i = k + 1; i < stackV.size(); ++i) onStack[stackV[i]] = -1;
+        stackV.resize(k + 1);
+        stackE.resize(k);
       }
-      const int inMin = stackE[k + (minAt + n - 1) % n];
-      const int outMin = stackE[k + minAt];
-      ring.referencePiece = std::min(inMin, outMin);
-      ring.hole = sides[ring.referencePiece] == Side::Below;
-      if (ring.vertices.size() < 3) throw InternalError("traceContours: degenerate ring");
-      for (std::size_t i = 0; i < n; ++i)
-        result.ringOfPiece[stackE[k + i]] = int(result.rings.size());
-      result.rings.push_back(std::move(ring));
-      for (std::size_t i = k + 1; i < stackV.size(); ++i) onStack[stackV[i]] = -1;
-      stackV.resize(k + 1);
-      stackE.resize(k);
-      cur = w;
+      const int nextPiece = pairOut[std::size_t(e)];
+      if (nextPiece < 0 || used[std::size_t(nextPiece)]) {
+        if (stackV.size() == 1) break;  // back at the start, every piece of this walk used
+        throw InternalError("traceContours: result boundary is not balanced at a vertex");
+      }
+      e = nextPiece;
     }
     onStack[v0] = -1;
   }

@@ -24,8 +24,9 @@ constexpr ClipOp kOps[] = {ClipOp::Intersection, ClipOp::Union, ClipOp::Differen
 // Kinds of random input, all inside [0, 20]^2:
 // 0 random vertices; 1 grid walk with step 2 (collinear runs, touching, overlapping edges);
 // 2 several random paths; 3 unit-step walk on a 6x6 grid (almost everything degenerate);
-// 4 an OpenCV-like pixel chain; 5 a random quad with sub-pixel corners (multiples of 1/256).
-constexpr int kKinds = 6;
+// 4 an OpenCV-like pixel chain; 5 a random quad with sub-pixel corners (multiples of 1/256);
+// 6 many edges crossing or ending at one common point (high-degree vertices).
+constexpr int kKinds = 7;
 Paths randomInput(std::mt19937& rng, int kind) {
   switch (kind) {
     case 0:
@@ -46,6 +47,24 @@ Paths randomInput(std::mt19937& rng, int kind) {
       Path chain = testing::pixelChain(rng, 20 + int(rng() % 60));
       for (Point& q : chain) q += Point(10, 10);
       return {chain};
+    }
+    case 6: {
+      // Many edges through one point (10,10), crossing there or ending there, on a coarse grid:
+      // pieces of several rings meet at that point, where rings must touch without crossing.
+      // A quad a, 20-a, b, 20-b has two edges through the centre; a fan has its apex there.
+      std::uniform_int_distribution<int> c(0, 8);
+      Paths p;
+      const int count = 2 + int(rng() % 4);
+      for (int i = 0; i < count; ++i) {
+        const Point a(2.5 * c(rng), 2.5 * c(rng));
+        const Point b(2.5 * c(rng), 2.5 * c(rng));
+        if (rng() % 3 == 0) {
+          p.push_back({{10, 10}, a, b});
+        } else {
+          p.push_back({a, Point(20, 20) - a, b, Point(20, 20) - b});
+        }
+      }
+      return p;
     }
     default: {
       std::uniform_int_distribution<int> c(0, 20 * 256);
