@@ -92,7 +92,9 @@ constexpr const char* kClipLinesHelp =
 
 }  // namespace
 
-int main(int argc, char** argv) {
+namespace {
+
+int runMain(int argc, char** argv) {
   CLI::App app{"roiclip: exact clipping of self-intersecting polygons"};
   app.footer(kExitCodesHelp);
   app.require_subcommand(1);
@@ -238,4 +240,18 @@ int main(int argc, char** argv) {
     return kExitInternal;
   }
   return kExitOk;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  // Setting up the command line can throw too (std::bad_alloc); nothing escapes main.
+  try {
+    return runMain(argc, argv);
+  } catch (const std::exception& e) {
+    std::cerr << "roiclip: internal error: " << e.what() << "\n";
+  } catch (...) {
+    std::cerr << "roiclip: internal error: unknown exception\n";
+  }
+  return kExitInternal;
 }
