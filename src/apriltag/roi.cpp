@@ -176,7 +176,7 @@ Board Board::fromJson(const std::string& text, const std::string& source) {
   Json j;
   try {
     j = Json::parse(text);
-  } catch (const Json::parse_error& e) {
+  } catch (const Json::exception& e) {  // parse_error, and out_of_range.406 for 1e999
     throw InvalidInputError(source + ": malformed JSON: " + e.what());
   }
   if (!j.is_object()) throw InvalidInputError(source + ": expected a JSON object");

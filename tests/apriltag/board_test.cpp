@@ -58,6 +58,10 @@ TEST(AprilTagBoardErrors, MalformedJson) {
   expectInvalid([] { (void)ra::Board::load(kData + "malformed.json"); },
                 {"malformed.json", "malformed JSON"});
   expectInvalid([] { (void)ra::Board::fromJson("[1, 2]", "inline"); }, {"inline", "object"});
+  // Found by tests/fuzz/fuzz_board: a number too large for a double is nlohmann's
+  // out_of_range.406, which escaped as a non-roiclip exception.
+  expectInvalid([] { (void)ra::Board::fromJson(R"({"tags": [1e999]})", "inline"); },
+                {"inline", "malformed JSON", "1e999"});
 }
 
 TEST(AprilTagBoardErrors, UnknownTagId) {
