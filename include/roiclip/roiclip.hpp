@@ -58,8 +58,21 @@ Paths clipLines(const Paths& lines, const Paths& region, FillRule regionRule,
                 LinePart part = LinePart::Inside, const Grid& grid = {});
 const char* toString(LinePart part);
 
-/// True when the fill rule counts winding number w as inside.
-bool isFilled(FillRule rule, long long w);
+/// True when the fill rule counts winding number w as inside. (Inline: the sweep asks this for
+/// every piece.)
+inline bool isFilled(FillRule rule, long long w) {
+  switch (rule) {
+    case FillRule::EvenOdd:
+      return (w & 1) != 0;
+    case FillRule::NonZero:
+      return w != 0;
+    case FillRule::Positive:
+      return w > 0;
+    case FillRule::Negative:
+      return w < 0;
+  }
+  return false;
+}
 
 /// Parse "evenodd", "nonzero", "positive", "negative" (case-insensitive; also "even-odd",
 /// "non-zero"). @throws InvalidInputError on anything else.

@@ -46,20 +46,6 @@ Paths PolygonSet::toPaths() const {
   return out;
 }
 
-bool isFilled(FillRule rule, long long w) {
-  switch (rule) {
-    case FillRule::EvenOdd:
-      return (w & 1) != 0;
-    case FillRule::NonZero:
-      return w != 0;
-    case FillRule::Positive:
-      return w > 0;
-    case FillRule::Negative:
-      return w < 0;
-  }
-  return false;
-}
-
 namespace {
 std::string normalized(const char* name) {
   std::string s;

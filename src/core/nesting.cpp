@@ -4,9 +4,6 @@
 // a ring's lowest-leftmost piece, that piece belongs to the ring bounding the region just
 // below; whether that ring is an outer ring or a hole, and whether the region is filled, says
 // who owns the ring. No point-in-polygon tests: linear after the sweep.
-#include <algorithm>
-#include <numeric>
-
 #include <roiclip/error.hpp>
 
 #include "pipeline.hpp"
@@ -18,16 +15,27 @@ PolygonSet buildNesting(const Arrangement& arrangement, const Contours& contours
   const auto& pieces = arrangement.pieces;
   const auto& rings = contours.rings;
 
-  std::vector<int> order(rings.size());
-  std::iota(order.begin(), order.end(), 0);
-  std::sort(order.begin(), order.end(),
-            [&](int a, int b) { return rings[a].referencePiece < rings[b].referencePiece; });
+  // Rings in the order of their reference pieces (each piece is the reference of one ring at
+  // most): the piece below a ring's reference piece comes earlier in the sweep, so its ring has
+  // been placed before.
+  std::vector<int> ringAtPiece(pieces.size(), -1);
+  std::size_t outerCount = 0;
+  for (std::size_t r = 0; r < rings.size(); ++r) {
+    ringAtPiece[std::size_t(rings[r].referencePiece)] = int(r);
+    if (!rings[r].hole) ++outerCount;
+  }
+  std::vector<int> order;
+  order.reserve(rings.size());
+  for (int r : ringAtPiece) {
+    if (r >= 0) order.push_back(r);
+  }
 
   // For outer rings: the hole ring they lie in. For holes: their outer ring.
   std::vector<int> owner(rings.size(), -1);
   std::vector<int> polygonOf(rings.size(), -1);
   std::vector<int> holeIndexOf(rings.size(), -1);
   PolygonSet result;
+  result.polygons.reserve(outerCount);
 
   const double inv = 1.0 / grid.scale;
   auto toPath = [&](const TracedRing& ring) {

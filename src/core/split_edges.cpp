@@ -2,7 +2,7 @@
 //
 // A Bentley-Ottmann sweep in lexicographic (x, then y) order. Crossings are not swapped in the
 // status structure; instead, every event point P is visited once, and all active pieces that
-// pass through P (ending there, crossing there, or touched there by another edge's vertex) are
+// pass through P (locator there, crossing there, or touched there by another edge's vertex) are
 // cut at P and the parts to the right re-inserted, sorted by direction. Pieces starting at P in
 // the same direction are coincident (collinear overlap) and are merged, their winding
 // contributions summed. Neighbours that become adjacent are tested for a crossing to the right
@@ -37,7 +37,8 @@ struct Active {
 
 struct Event {
   XPoint point;
-  int piece = -1;  // -1: visit the point only
+  int piece = -1;    // -1: visit the point only
+  int through = -1;  // a crossing: one of the two pieces crossing there (locates p in the status)
 };
 
 struct EventAfter {
@@ -168,18 +169,25 @@ class Sweep {
   void visit(const XPoint& p) {
     vertex_ = -1;
     starts_.clear();
-    int ending = -1;  // a piece known to end at p, if any: its status node locates p
+    int locator = -1;  // a piece known to pass through p, if any: its status node locates p
     while (cursor_ < initial_.size() && equal(XPoint(initial_[cursor_].point), p)) {
       const InitialEvent& ev = initial_[cursor_];
       if (!ev.end) {
         starts_.push_back(ev.piece);
       } else if (inStatus_[ev.piece] && equal(active_[ev.piece].right, p)) {
-        ending = ev.piece;
+        locator = ev.piece;
       }
       ++cursor_;
     }
     while (!queue_.empty() && equal(queue_.top().point, p)) {
-      if (queue_.top().piece >= 0) starts_.push_back(queue_.top().piece);
+      const Event& ev = queue_.top();
+      if (ev.piece >= 0) starts_.push_back(ev.piece);
+      // A piece still in the status whose line passes through p goes through p (it started
+      // before p and ends at or after it): its node locates p without a search.
+      if (locator < 0 && ev.through >= 0 && inStatus_[ev.through] &&
+          orient(active_[ev.through].lineA, active_[ev.through].lineB, p) == 0) {
+        locator = ev.through;
+      }
       queue_.pop();
     }
 
@@ -189,8 +197,8 @@ class Sweep {
       return orient(active_[*it].lineA, active_[*it].lineB, p) == 0;
     };
     Status::iterator lo, hi;
-    if (ending >= 0) {
-      lo = where_[ending];
+    if (locator >= 0) {
+      lo = where_[locator];
       hi = std::next(lo);
       while (lo != status_.begin() && passes(std::prev(lo))) --lo;
     } else {
@@ -339,7 +347,7 @@ class Sweep {
     const int cb = compare(x, pb.right);
     if (ca > 0 || cb > 0) return;
     if (ca == 0 || cb == 0) return;  // already an event: the end of one of them
-    queue_.push({x, -1});
+    queue_.push({x, -1, a});
   }
 
   const Combination& how_;

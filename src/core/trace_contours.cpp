@@ -125,6 +125,7 @@ Contours traceContours(const Arrangement& arrangement) {
         const std::size_t k = std::size_t(onStack[w]);
         const std::size_t n = stackV.size() - k;
         TracedRing ring;
+        ring.vertices.reserve(n);
         int minVertex = stackV[k];
         std::size_t minAt = 0;
         for (std::size_t i = 0; i < n; ++i) {

@@ -92,8 +92,8 @@ TEST_P(Fixture, AgreesWithOracles) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Data, Fixture, ::testing::ValuesIn(fixtureFiles()),
-                         [](const ::testing::TestParamInfo<std::string>& info) {
-                           std::string name = fs::path(info.param).stem().string();
+                         [](const ::testing::TestParamInfo<std::string>& param) {
+                           std::string name = fs::path(param.param).stem().string();
                            for (char& c : name) {
                              if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
                            }

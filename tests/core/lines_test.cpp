@@ -349,8 +349,8 @@ TEST(ClipLines, AgreesWithBoostGeometryOnSimplePolygons) {
       BMultiLine in, out;
       bg::intersection(l, polygon, in);
       bg::difference(l, polygon, out);
-      boostIn += bg::length(in);
-      boostOut += bg::length(out);
+      boostIn += static_cast<double>(bg::length(in));
+      boostOut += static_cast<double>(bg::length(out));
     }
     const double tolerance = 1e-6 * (1 + length(lines));
     EXPECT_NEAR(length(clipLines(lines, {star}, FillRule::NonZero)), boostIn, tolerance);
