@@ -25,8 +25,10 @@ count() {  # row library toggle-patterns...
 printf '| row | roiclip (M instr) | Clipper 1 (M instr) | ratio Clipper/roiclip |\n|---|--:|--:|--:|\n'
 for row in "$@"; do
   r=$(count "$row" roiclip 'roiclip::clip(*' 'roiclip::simplify(*' 'roiclip::clipLines(*')
-  c=$(count "$row" clipper 'ClipperLib::ClipperBase::AddPath(*' 'ClipperLib::Clipper::Execute(*' \
-    'ClipperLib::SimplifyPolygons(*')
+  case $row in
+    Simplify/*) c=$(count "$row" clipper 'ClipperLib::SimplifyPolygons(*') ;;
+    *) c=$(count "$row" clipper 'ClipperLib::ClipperBase::AddPath(*' 'ClipperLib::Clipper::Execute(*') ;;
+  esac
   awk -v row="$row" -v r="$r" -v c="$c" \
     'BEGIN { printf "| %s | %.1f | %.1f | %.2fx |\n", row, r / 1e6, c / 1e6, (r > 0 ? c / r : 0) }'
 done
