@@ -39,6 +39,7 @@ void clipHalfPlane(const std::vector<Vertex>& in, IPoint hA, IPoint hB, std::vec
   out.clear();
   const std::size_t n = in.size();
   if (n == 0) return;
+  out.reserve(n + 16);  // usually a few crossings more than the input (no growth by doubling)
   const int firstSide = orient(hA, hB, in[0].p);
   int sp = firstSide;
   for (std::size_t i = 0; i < n; ++i) {
@@ -105,7 +106,12 @@ std::vector<ExactEdge> preclipConvex(const std::vector<std::vector<IPoint>>& rin
   std::vector<IPoint> clipRing = convexRing;
   if (orientation < 0) std::reverse(clipRing.begin(), clipRing.end());  // inside on the left
 
+  // Reserved up front: at 100k vertices growth by doubling doubled the bytes allocated, and
+  // fresh pages cost more than the clipping (kernel page faults).
+  std::size_t vertexCount = 0;
+  for (const std::vector<IPoint>& ring : rings) vertexCount += ring.size();
   std::vector<ExactEdge> out;
+  out.reserve(vertexCount + 16);
   std::vector<Vertex> path, next;
   const std::size_t sides = clipRing.size();
   for (const std::vector<IPoint>& ring : rings) {
@@ -125,6 +131,7 @@ std::vector<ExactEdge> preclipConvex(const std::vector<std::vector<IPoint>>& rin
     }
     if (outsideOne) continue;
     path.clear();
+    path.reserve(ring.size());
     for (std::size_t i = 0; i < ring.size(); ++i) {
       const IPoint a = ring[i], b = ring[(i + 1) % ring.size()];
       path.push_back({XPoint(a), a, b});
