@@ -23,7 +23,11 @@ PolygonSet intersectConvexRing(const Paths& other, FillRule otherRule, int other
   if (!isFilled(convexRule, convexOrientation(convexRing))) return {};
   Combination how;
   how.subjectRule = otherRule;
-  return resolve({}, preclipConvex(snapRings(other, otherOperand, grid), convexRing), how, grid);
+  thread_local std::vector<ExactEdge> clipped;  // kept between calls, see recycle()
+  preclipConvex(snapRings(other, otherOperand, grid), convexRing, clipped);
+  PolygonSet result = resolve({}, clipped, how, grid);
+  recycle(clipped);
+  return result;
 }
 
 }  // namespace

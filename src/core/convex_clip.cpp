@@ -99,8 +99,8 @@ int convexOrientation(const std::vector<IPoint>& ring) {
   return xFlips <= 2 && yFlips <= 2 ? turn : 0;
 }
 
-std::vector<ExactEdge> preclipConvex(const std::vector<std::vector<IPoint>>& rings,
-                                     const std::vector<IPoint>& convexRing) {
+void preclipConvex(const std::vector<std::vector<IPoint>>& rings,
+                   const std::vector<IPoint>& convexRing, std::vector<ExactEdge>& out) {
   const int orientation = convexOrientation(convexRing);
   if (orientation == 0) throw InternalError("preclipConvex: clip ring is not convex");
   std::vector<IPoint> clipRing = convexRing;
@@ -110,9 +110,9 @@ std::vector<ExactEdge> preclipConvex(const std::vector<std::vector<IPoint>>& rin
   // fresh pages cost more than the clipping (kernel page faults).
   std::size_t vertexCount = 0;
   for (const std::vector<IPoint>& ring : rings) vertexCount += ring.size();
-  std::vector<ExactEdge> out;
+  out.clear();
   out.reserve(vertexCount + 16);
-  std::vector<Vertex> path, next;
+  thread_local std::vector<Vertex> path, next;  // kept between calls, see recycle()
   const std::size_t sides = clipRing.size();
   for (const std::vector<IPoint>& ring : rings) {
     // Rings entirely inside every half-plane pass unchanged; rings entirely outside one of them
@@ -157,7 +157,8 @@ std::vector<ExactEdge> preclipConvex(const std::vector<std::vector<IPoint>>& rin
       out.push_back(e);
     }
   }
-  return out;
+  recycle(path);
+  recycle(next);
 }
 
 }  // namespace roiclip::detail

@@ -12,6 +12,20 @@
 
 namespace roiclip::detail {
 
+/// The pipeline's large per-edge working arrays are kept per thread between calls: allocating
+/// them afresh costs a page fault per 4 KiB touched, which on a 100k-vertex contour took about
+/// as long as the clipping itself. recycle() empties such an array after use and keeps its
+/// capacity up to kKeptScratchBytes; a larger one is freed.
+constexpr std::size_t kKeptScratchBytes = std::size_t(64) << 20;
+template <class T>
+void recycle(std::vector<T>& v) {
+  if (v.capacity() * sizeof(T) > kKeptScratchBytes) {
+    std::vector<T>().swap(v);
+  } else {
+    v.clear();
+  }
+}
+
 /// Operand index: 0 = subject, 1 = clip.
 constexpr int kOperands = 2;
 using Windings = std::array<std::int64_t, kOperands>;
@@ -147,9 +161,10 @@ int convexOrientation(const std::vector<IPoint>& ring);
 
 /// Convex pre-clip (convex_clip.cpp): Sutherland-Hodgman against each half-plane of a convex
 /// ring, exactly. Inside the ring, every winding number of `rings` is preserved; outside it,
-/// every winding number becomes 0. Output edges lie on integer input or clip segments.
-std::vector<ExactEdge> preclipConvex(const std::vector<std::vector<IPoint>>& rings,
-                                     const std::vector<IPoint>& convexRing);
+/// every winding number becomes 0. Output edges lie on integer input or clip segments; `out` is
+/// cleared first.
+void preclipConvex(const std::vector<std::vector<IPoint>>& rings,
+                   const std::vector<IPoint>& convexRing, std::vector<ExactEdge>& out);
 
 /// Stage 4 (nesting.cpp): give each hole its outer ring and each outer ring the hole it lies
 /// in, and emit the polygons in image coordinates with roiclip's output orientation.

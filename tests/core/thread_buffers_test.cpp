@@ -1,0 +1,116 @@
+// The pipeline keeps its large working arrays per thread between calls (pipeline.hpp,
+// recycle()). Nothing of one call may leak into the next: results must be the same whatever
+// ran before on the thread (larger, smaller, failed calls) and with several threads at once.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <thread>
+#include <vector>
+
+#include <roiclip/roiclip.hpp>
+
+#include "oracle.hpp"
+
+namespace roiclip {
+namespace {
+
+struct Job {
+  ClipOp op;
+  Paths subject, clip;
+  FillRule rule;
+};
+
+// Ring for ring, vertex for vertex.
+void expectSame(const PolygonSet& a, const PolygonSet& b, const char* what) {
+  ASSERT_EQ(a.polygons.size(), b.polygons.size()) << what;
+  for (std::size_t i = 0; i < a.polygons.size(); ++i) {
+    const Polygon& p = a.polygons[i];
+    const Polygon& q = b.polygons[i];
+    EXPECT_EQ(p.outer, q.outer) << what << ", polygon " << i;
+    EXPECT_EQ(p.holes, q.holes) << what << ", polygon " << i;
+    EXPECT_EQ(p.parent, q.parent) << what << ", polygon " << i;
+    EXPECT_EQ(p.parentHole, q.parentHole) << what << ", polygon " << i;
+  }
+}
+
+PolygonSet run(const Job& job) { return clip(job.op, job.subject, job.clip, job.rule, job.rule); }
+
+// Each job's result on a thread that has run nothing before.
+std::vector<PolygonSet> freshResults(const std::vector<Job>& jobs) {
+  std::vector<PolygonSet> out(jobs.size());
+  for (std::size_t i = 0; i < jobs.size(); ++i) {
+    std::thread([&] { out[i] = run(jobs[i]); }).join();
+  }
+  return out;
+}
+
+// Large and small operands, the convex fast path (a quad) and the general path, every op.
+std::vector<Job> makeJobs() {
+  std::mt19937 rng(20261201);
+  const Paths quad = {{{30.25, 20.5}, {170.75, 35.5}, {160.5, 180.25}, {25.5, 150.75}}};
+  std::vector<Job> jobs;
+  const ClipOp ops[] = {ClipOp::Intersection, ClipOp::Union, ClipOp::Difference, ClipOp::Xor};
+  for (int i = 0; i < 16; ++i) {
+    const int n = i % 3 == 0 ? 400 : 12 + i;
+    Paths subject = {testing::randomPolygon(rng, n, 200)};
+    Paths other = i % 2 == 0 ? quad : Paths{testing::randomPolygon(rng, 9 + i, 200)};
+    jobs.push_back({ops[i % 4], std::move(subject), std::move(other),
+                    i % 4 < 2 ? FillRule::EvenOdd : FillRule::NonZero});
+  }
+  return jobs;
+}
+
+TEST(ThreadBuffers, ResultsDoNotDependOnEarlierCallsOnTheThread) {
+  const std::vector<Job> jobs = makeJobs();
+  const std::vector<PolygonSet> fresh = freshResults(jobs);
+  // Forwards, backwards and forwards again on one thread: every job follows larger and smaller
+  // ones, convex-path and general-path ones.
+  for (int pass = 0; pass < 3; ++pass) {
+    for (std::size_t k = 0; k < jobs.size(); ++k) {
+      const std::size_t i = pass == 1 ? jobs.size() - 1 - k : k;
+      expectSame(run(jobs[i]), fresh[i], "same thread, after other calls");
+    }
+  }
+}
+
+TEST(ThreadBuffers, ACallThatThrowsLeavesTheNextOneCorrect) {
+  const std::vector<Job> jobs = makeJobs();
+  const std::vector<PolygonSet> fresh = freshResults(jobs);
+  const double nan = std::nan("");
+  Paths bad = jobs[0].subject;
+  bad[0][bad[0].size() / 2].x = nan;  // rejected while reading the input
+  for (std::size_t i = 0; i < jobs.size(); ++i) {
+    EXPECT_THROW(clip(jobs[i].op, bad, jobs[i].clip, jobs[i].rule, jobs[i].rule),
+                 InvalidInputError);
+    expectSame(run(jobs[i]), fresh[i], "after a call that threw");
+  }
+}
+
+TEST(ThreadBuffers, ThreadsRunningAtOnceGetTheirOwnBuffers) {
+  const std::vector<Job> jobs = makeJobs();
+  const std::vector<PolygonSet> fresh = freshResults(jobs);
+  constexpr int kThreads = 4;
+  std::vector<std::vector<PolygonSet>> got(kThreads);
+  std::vector<std::thread> threads;
+  for (int t = 0; t < kThreads; ++t) {
+    threads.emplace_back([&, t] {
+      for (int round = 0; round < 5; ++round) {
+        for (std::size_t k = 0; k < jobs.size(); ++k) {
+          const std::size_t i = (k + std::size_t(t) * 5) % jobs.size();  // different orders
+          got[std::size_t(t)].push_back(run(jobs[i]));
+        }
+      }
+    });
+  }
+  for (std::thread& th : threads) th.join();
+  for (int t = 0; t < kThreads; ++t) {
+    for (std::size_t n = 0; n < got[std::size_t(t)].size(); ++n) {
+      const std::size_t i = (n % jobs.size() + std::size_t(t) * 5) % jobs.size();
+      expectSame(got[std::size_t(t)][n], fresh[i], "concurrent threads");
+    }
+  }
+}
+
+}  // namespace
+}  // namespace roiclip
