@@ -1,5 +1,10 @@
 // roiclip: exact clipping of self-intersecting polygons (extended Weiler-Atherton).
 // This header includes only the standard library and GLM. See geometry.hpp for conventions.
+//
+// Threads: every function here may be called from several threads at once. Each thread keeps
+// the working arrays of its largest call so far (up to 64 MiB per array; larger ones are freed
+// after the call), so repeated calls do not allocate and fault in fresh pages; the memory is
+// released when the thread exits.
 #pragma once
 
 #include <roiclip/error.hpp>
