@@ -18,7 +18,6 @@
 #include <exception>
 #include <optional>
 #include <string>
-#include <thread>
 #include <utility>
 
 #include <roiclip/roiclip.hpp>
@@ -151,17 +150,16 @@ void measure(benchmark::State& state, Case& c, Library lib, double tolerance, Ru
     std::optional<decltype(run())> result;
     AllocStats heap;
     std::string failure;
-    // In a thread of its own: roiclip keeps its working arrays per thread between calls, so
-    // only a thread's first call shows the memory a call needs (the thread frees them on exit).
-    std::thread([&] {
-      try {
-        resetAllocStats();
-        result.emplace(run());
-        heap = allocStats();
-      } catch (const std::exception& e) {
-        failure = std::string(libraryName(lib)) + " threw: " + e.what();
-      }
-    }).join();
+    // roiclip keeps its working arrays per thread between calls: freed first, so that this
+    // call's figures include them (and its time, the cold start).
+    releaseThreadBuffers();
+    try {
+      resetAllocStats();
+      result.emplace(run());
+      heap = allocStats();
+    } catch (const std::exception& e) {
+      failure = std::string(libraryName(lib)) + " threw: " + e.what();
+    }
     state.PauseTiming();
     if (!failure.empty()) {
       std::fprintf(stderr, "WARNING: %s: %s\n", c.name.c_str(), failure.c_str());

@@ -7,12 +7,9 @@
 #include <cmath>
 #include <cstdio>
 #include <deque>
-#include <exception>
-#include <optional>
 #include <random>
 #include <stdexcept>
 #include <string>
-#include <thread>
 #include <unordered_set>
 
 #include <benchmark/benchmark.h>
@@ -104,22 +101,12 @@ void measureLines(benchmark::State& state, LinesCase& c, bool reference, double 
       continue;
     }
     first = false;
-    // In a thread of its own, as in core_bench.cpp: roiclip keeps working arrays per thread.
-    std::optional<decltype(run())> result;
-    AllocStats heap;
-    std::exception_ptr error;
-    std::thread([&] {
-      try {
-        resetAllocStats();
-        result.emplace(run());
-        heap = allocStats();
-      } catch (...) {
-        error = std::current_exception();
-      }
-    }).join();
-    if (error) std::rethrow_exception(error);
+    releaseThreadBuffers();  // as in core_bench.cpp: the figures include roiclip's kept arrays
+    resetAllocStats();
+    auto result = run();
+    const AllocStats heap = allocStats();
     state.PauseTiming();
-    const double total = length(*result);
+    const double total = length(result);
     if (reference) c.length = total;
     state.counters["vertices"] = double(c.vertices());
     state.counters["length"] = total;

@@ -4,7 +4,7 @@
 // Threads: every function here may be called from several threads at once. Each thread keeps
 // the working arrays of its largest call so far (up to 64 MiB per array; larger ones are freed
 // after the call), so repeated calls do not allocate and fault in fresh pages; the memory is
-// released when the thread exits.
+// released when the thread exits, or at once by releaseThreadBuffers().
 #pragma once
 
 #include <roiclip/error.hpp>
@@ -62,6 +62,10 @@ enum class LinePart {
 Paths clipLines(const Paths& lines, const Paths& region, FillRule regionRule,
                 LinePart part = LinePart::Inside, const Grid& grid = {});
 const char* toString(LinePart part);
+
+/// Free the working arrays the calling thread keeps between calls (see "Threads" above), e.g.
+/// after a burst of large inputs. The next call allocates them again.
+void releaseThreadBuffers();
 
 /// True when the fill rule counts winding number w as inside. (Inline: the sweep asks this for
 /// every piece.)

@@ -16,6 +16,9 @@ PolygonSet resolve(const std::vector<InputEdge>& edges, const std::vector<ExactE
   return buildNesting(arrangement, contours, grid);
 }
 
+// The pre-clipped edges, kept per thread between calls (see recycle()).
+thread_local std::vector<ExactEdge> tClipped;
+
 // Intersection with one convex ring: pre-clip the other operand to it, then resolve that alone.
 PolygonSet intersectConvexRing(const Paths& other, FillRule otherRule, int otherOperand,
                                const std::vector<IPoint>& convexRing, FillRule convexRule,
@@ -23,7 +26,7 @@ PolygonSet intersectConvexRing(const Paths& other, FillRule otherRule, int other
   if (!isFilled(convexRule, convexOrientation(convexRing))) return {};
   Combination how;
   how.subjectRule = otherRule;
-  thread_local std::vector<ExactEdge> clipped;  // kept between calls, see recycle()
+  std::vector<ExactEdge>& clipped = tClipped;
   preclipConvex(snapRings(other, otherOperand, grid), convexRing, clipped);
   PolygonSet result = resolve({}, clipped, how, grid);
   recycle(clipped);
@@ -41,6 +44,12 @@ PolygonSet booleanGeneral(const Paths& subject, const Paths* clipPaths, const Co
 }
 
 }  // namespace detail
+
+void releaseThreadBuffers() {
+  std::vector<detail::ExactEdge>().swap(detail::tClipped);
+  detail::releasePreclipBuffers();
+  detail::releaseSweepBuffers();
+}
 
 PolygonSet simplify(const Paths& paths, FillRule rule, const Grid& grid) {
   detail::Combination how;

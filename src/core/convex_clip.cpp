@@ -25,6 +25,9 @@ struct Vertex {
   IPoint lineA, lineB;
 };
 
+// The path being clipped and the next one, kept per thread between calls (see recycle()).
+thread_local std::vector<Vertex> tPath, tNext;
+
 XPoint crossing(const Vertex& from, IPoint hA, IPoint hB) {
   XPoint x;
   if (!lineIntersection(from.lineA, from.lineB, hA, hB, x)) {
@@ -63,6 +66,11 @@ void clipHalfPlane(const std::vector<Vertex>& in, IPoint hA, IPoint hB, std::vec
 }
 
 }  // namespace
+
+void releasePreclipBuffers() {
+  std::vector<Vertex>().swap(tPath);
+  std::vector<Vertex>().swap(tNext);
+}
 
 int convexOrientation(const std::vector<IPoint>& ring) {
   const std::size_t n = ring.size();
@@ -112,7 +120,8 @@ void preclipConvex(const std::vector<std::vector<IPoint>>& rings,
   for (const std::vector<IPoint>& ring : rings) vertexCount += ring.size();
   out.clear();
   out.reserve(vertexCount + 16);
-  thread_local std::vector<Vertex> path, next;  // kept between calls, see recycle()
+  std::vector<Vertex>& path = tPath;
+  std::vector<Vertex>& next = tNext;
   const std::size_t sides = clipRing.size();
   for (const std::vector<IPoint>& ring : rings) {
     // Rings entirely inside every half-plane pass unchanged; rings entirely outside one of them

@@ -26,6 +26,10 @@ void recycle(std::vector<T>& v) {
   }
 }
 
+/// Free the arrays one stage keeps for this thread (roiclip::releaseThreadBuffers()).
+void releaseSweepBuffers();
+void releasePreclipBuffers();
+
 /// Operand index: 0 = subject, 1 = clip.
 constexpr int kOperands = 2;
 using Windings = std::array<std::int64_t, kOperands>;

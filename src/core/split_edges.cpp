@@ -102,6 +102,9 @@ class Sweep {
     out_.vertices.reserve(total / 4 + 16);
   }
 
+  /// Frees the arrays this thread keeps (releaseThreadBuffers()).
+  static void releaseBuffers() { threadBuffers() = Buffers{}; }
+
   Sweep(const Sweep&) = delete;
   Sweep& operator=(const Sweep&) = delete;
   ~Sweep() {
@@ -397,6 +400,8 @@ class Sweep {
 };
 
 }  // namespace
+
+void releaseSweepBuffers() { Sweep::releaseBuffers(); }
 
 Arrangement splitEdges(const std::vector<InputEdge>& edges,
                        const std::vector<ExactEdge>& exactEdges, const Combination& how) {

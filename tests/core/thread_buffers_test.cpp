@@ -3,7 +3,12 @@
 // ran before on the thread (larger, smaller, failed calls) and with several threads at once.
 #include <gtest/gtest.h>
 
+#include <malloc.h>
+
+#include <atomic>
 #include <cmath>
+#include <cstdlib>
+#include <new>
 #include <random>
 #include <thread>
 #include <vector>
@@ -11,6 +16,25 @@
 #include <roiclip/roiclip.hpp>
 
 #include "oracle.hpp"
+
+// Bytes live in operator new, counted for this test binary (works under AddressSanitizer too,
+// unlike mallinfo2).
+namespace {
+std::atomic<std::int64_t> gLiveBytes{0};
+}  // namespace
+
+void* operator new(std::size_t size) {
+  void* p = std::malloc(size == 0 ? 1 : size);
+  if (p == nullptr) throw std::bad_alloc();
+  gLiveBytes += std::int64_t(malloc_usable_size(p));
+  return p;
+}
+void operator delete(void* p) noexcept {
+  if (p == nullptr) return;
+  gLiveBytes -= std::int64_t(malloc_usable_size(p));
+  std::free(p);
+}
+void operator delete(void* p, std::size_t) noexcept { operator delete(p); }
 
 namespace roiclip {
 namespace {
@@ -110,6 +134,24 @@ TEST(ThreadBuffers, ThreadsRunningAtOnceGetTheirOwnBuffers) {
       expectSame(got[std::size_t(t)][n], fresh[i], "concurrent threads");
     }
   }
+}
+
+std::size_t heapInUse() { return std::size_t(gLiveBytes.load()); }
+
+TEST(ThreadBuffers, ReleaseFreesTheKeptArraysAndTheNextCallIsTheSame) {
+  std::mt19937 rng(7);
+  // A 20k-vertex random pixel walk (self-touching) inside a quad: the convex path, whose
+  // pre-clip and sweep arrays take several MB.
+  const Paths chain = {testing::pixelChain(rng, 20000)};
+  const Paths quad = {{{-300.5, -400.25}, {350.75, -300.5}, {300.25, 450.5}, {-350.5, 300.75}}};
+  releaseThreadBuffers();
+  const PolygonSet first = intersect(chain, quad, FillRule::NonZero);
+  const std::size_t kept = heapInUse();
+  releaseThreadBuffers();
+  const std::size_t released = heapInUse();
+  EXPECT_GT(kept, released + (std::size_t(4) << 20))
+      << "in use after the call " << kept << " bytes, after releaseThreadBuffers " << released;
+  expectSame(intersect(chain, quad, FillRule::NonZero), first, "after releaseThreadBuffers");
 }
 
 }  // namespace
