@@ -2,7 +2,7 @@
 //
 // A Bentley-Ottmann sweep in lexicographic (x, then y) order. Crossings are not swapped in the
 // status structure; instead, every event point P is visited once, and all active pieces that
-// pass through P (locator there, crossing there, or touched there by another edge's vertex) are
+// pass through P (ending there, crossing there, or touched there by another edge's vertex) are
 // cut at P and the parts to the right re-inserted, sorted by direction. Pieces starting at P in
 // the same direction are coincident (collinear overlap) and are merged, their winding
 // contributions summed. Neighbours that become adjacent are tested for a crossing to the right
