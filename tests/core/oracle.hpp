@@ -370,4 +370,62 @@ inline std::string fixtureDir() {
   return env != nullptr ? std::string(env) : std::string(ROICLIP_TEST_DATA) + "/core";
 }
 
+/// Length of open polylines.
+inline double length(const Path& line) {
+  double l = 0;
+  for (std::size_t i = 1; i < line.size(); ++i) {
+    l += std::hypot(line[i].x - line[i - 1].x, line[i].y - line[i - 1].y);
+  }
+  return l;
+}
+inline double length(const Paths& lines) {
+  double l = 0;
+  for (const Path& line : lines) l += length(line);
+  return l;
+}
+
+// Whether q lies on one of the polylines (within a distance far below any sample spacing).
+inline bool onPolylines(const Paths& lines, Point q) {
+  for (const Path& line : lines) {
+    for (std::size_t i = 1; i < line.size(); ++i) {
+      if (distanceToEdges({{line[i - 1], line[i]}}, q) < 1e-7) return true;
+    }
+  }
+  return false;
+}
+
+// For q on exactly one region edge (not at a vertex): whether a side of that edge is filled,
+// from the exact winding numbers one oracle unit (1/4096 px) away along the axes. Nothing when
+// q is elsewhere or the neighbours do not settle it, or when another edge passes within two
+// oracle units of q (the neighbours could lie beyond it: found by fuzz_clip_lines on 1/256 px
+// coordinates).
+inline std::optional<bool> inClosure(const Paths& region, FillRule rule, Point q) {
+  if (exactWinding(region, q).has_value()) return std::nullopt;
+  // Two region edges crossing at q make four sectors the axis neighbours may not all reach.
+  std::optional<Point> line;
+  for (const Path& path : region) {
+    for (std::size_t i = 0; i < path.size(); ++i) {
+      const Point a = path[i], b = path[(i + 1) % path.size()];
+      if (a == q || b == q) return std::nullopt;
+      if (exactWinding({{a, b}}, q).has_value()) {
+        if (distanceToEdges({{a, b}}, q) < 2.0 / 4096) return std::nullopt;
+        continue;
+      }
+      if (line && line->x * (b - a).y - line->y * (b - a).x != 0) return std::nullopt;
+      line = b - a;
+    }
+  }
+  constexpr double d = 1.0 / 4096;
+  int sides = 0;
+  bool filled = false;
+  for (const Point offset : {Point(d, 0), Point(-d, 0), Point(0, d), Point(0, -d)}) {
+    const auto w = exactWinding(region, q + offset);
+    if (!w) continue;
+    ++sides;
+    filled = filled || isFilled(rule, *w);
+  }
+  if (sides < 2) return std::nullopt;
+  return filled;
+}
+
 }  // namespace roiclip::testing

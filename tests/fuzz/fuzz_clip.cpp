@@ -8,48 +8,11 @@
 //              then the subject's paths and the clip's paths as in fuzz_simplify.
 // A hull is one strictly convex ring, so with Intersection the convex fast path runs; every
 // other input goes through the general pipeline.
-#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <string>
 
 #include "fuzz_support.hpp"
-
-namespace {
-
-using roiclip::Path;
-using roiclip::Paths;
-using roiclip::Point;
-
-double cross(Point o, Point a, Point b) {
-  return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
-}
-
-// Strictly convex hull (monotone chain, collinear points dropped) of every vertex of `paths`, as
-// one ring; exact for the decoded coordinates (small multiples of 2^-8 or of 2^19).
-Paths convexHull(const Paths& paths, bool reverse) {
-  std::vector<Point> pts;
-  for (const Path& p : paths) pts.insert(pts.end(), p.begin(), p.end());
-  std::sort(pts.begin(), pts.end(),
-            [](Point a, Point b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
-  pts.erase(std::unique(pts.begin(), pts.end()), pts.end());
-  if (pts.size() < 3) return {Path(pts.begin(), pts.end())};
-  Path hull(2 * pts.size());
-  std::size_t k = 0;
-  for (std::size_t i = 0; i < pts.size(); ++i) {
-    while (k >= 2 && cross(hull[k - 2], hull[k - 1], pts[i]) <= 0) --k;
-    hull[k++] = pts[i];
-  }
-  for (std::size_t i = pts.size() - 1, lower = k + 1; i-- > 0;) {
-    while (k >= lower && cross(hull[k - 2], hull[k - 1], pts[i]) <= 0) --k;
-    hull[k++] = pts[i];
-  }
-  hull.resize(k - 1);
-  if (reverse) std::reverse(hull.begin(), hull.end());
-  return {hull};
-}
-
-}  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace roiclip;
@@ -64,8 +27,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const bool reverse = (h1 & 32) != 0;
   Paths subject = fuzz::decodePaths(in, mode, 1 + ((h1 >> 3) & 3), 32);
   Paths clipPaths = fuzz::decodePaths(in, mode, 4, 32);
-  if ((h0 & 64) != 0) clipPaths = convexHull(clipPaths, reverse);
-  if ((h0 & 128) != 0) subject = convexHull(subject, reverse);
+  if ((h0 & 64) != 0) clipPaths = fuzz::convexHull(clipPaths, reverse);
+  if ((h0 & 128) != 0) subject = fuzz::convexHull(subject, reverse);
   PolygonSet result;
   fuzz::expectDocumentedErrors(
       "clip", [&] { result = clip(op, subject, clipPaths, subjectRule, clipRule); }, true);

@@ -52,6 +52,12 @@ def clip_seed(subject, clip, op, srule="evenodd", crule="evenodd", mode=0, conve
     return bytes([h0, h1]) + paths_bytes(subject) + paths_bytes(clip)
 
 
+def lines_seed(lines, region, rule="evenodd", mode=0, convex=False, reverse=False):
+    h0 = RULES[rule] | convex << 2 | reverse << 3
+    h1 = mode | (len(lines) - 1) << 3
+    return bytes([h0, h1]) + paths_bytes(lines) + paths_bytes(region)
+
+
 def write(out, target, name, data):
     d = out / target
     d.mkdir(parents=True, exist_ok=True)
@@ -103,6 +109,26 @@ def main():
     for mode in (2, 4, 5):
         write(out, "fuzz_clip", f"convex_quad_mode{mode}",
               clip_seed(PENTAGRAM, quad, "intersection", mode=mode, convex_clip=True))
+
+    # Open polylines: crossing, along the boundary, through a vertex, touching, inside holes.
+    line_sets = {"cross": [[(0, 7), (15, 7)]], "along": [[(0, 0), (15, 0), (15, 15)]],
+                 "through_vertex": [[(0, 0), (15, 15)]], "zigzag": [[(0, 0), (4, 9), (8, 0),
+                                                                     (12, 9), (15, 0)]],
+                 "degenerate": [[(3, 3)], [(5, 5), (5, 5)], [(1, 2), (9, 2)]]}
+    regions = {"square": [SQUARE], "bowtie": BOWTIE, "hole": NESTED_HOLE,
+               "pentagram": PENTAGRAM, "shared_edge": SHARED_EDGE}
+    for lname, lines in line_sets.items():
+        for rname, region in regions.items():
+            write(out, "fuzz_clip_lines", f"{lname}_{rname}", lines_seed(lines, region))
+        write(out, "fuzz_clip_lines", f"{lname}_pentagram_nonzero",
+              lines_seed(lines, PENTAGRAM, "nonzero"))
+        write(out, "fuzz_clip_lines", f"{lname}_convex",
+              lines_seed(lines, [[(3, 1), (12, 2), (14, 13), (1, 11)]], convex=True))
+        write(out, "fuzz_clip_lines", f"{lname}_convex_reversed",
+              lines_seed(lines, [[(3, 1), (12, 2), (14, 13), (1, 11)]], convex=True, reverse=True))
+    for mode in (2, 4, 5):
+        write(out, "fuzz_clip_lines", f"zigzag_bowtie_mode{mode}",
+              lines_seed(line_sets["zigzag"], BOWTIE, mode=mode))
 
     for f in sorted((ROOT / "tests/data/io").iterdir()):
         write(out, "fuzz_geojson", f.name, f.read_bytes())
