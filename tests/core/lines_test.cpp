@@ -224,22 +224,7 @@ Path randomConvex(std::mt19937& rng, int n) {
   if (rng() % 2 == 0) {
     for (Point& q : p) q += Point(double(rng() % 256) / 256, double(rng() % 256) / 256);
   }
-  std::sort(p.begin(), p.end(),
-            [](Point a, Point b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
-  const auto cross = [](Point o, Point a, Point b) {
-    return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
-  };
-  Path hull(2 * p.size());
-  std::size_t k = 0;
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    while (k >= 2 && cross(hull[k - 2], hull[k - 1], p[i]) <= 0) --k;
-    hull[k++] = p[i];
-  }
-  for (std::size_t i = p.size() - 1, t = k + 1; i-- > 0;) {
-    while (k >= t && cross(hull[k - 2], hull[k - 1], p[i]) <= 0) --k;
-    hull[k++] = p[i];
-  }
-  hull.resize(k - 1);
+  Path hull = testing::convexHull({p}, false)[0];
   if (rng() % 2 == 0) std::reverse(hull.begin(), hull.end());
   return hull;
 }

@@ -428,4 +428,32 @@ inline std::optional<bool> inClosure(const Paths& region, FillRule rule, Point q
   return filled;
 }
 
+/// Strictly convex hull (monotone chain, collinear points dropped) of every vertex of `paths`,
+/// as one ring; exact for coordinates on a binary grid (the tests' and fuzzers' inputs). Used to
+/// send inputs down the convex fast paths.
+inline Paths convexHull(const Paths& paths, bool reverse) {
+  const auto cross = [](Point o, Point a, Point b) {
+    return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
+  };
+  std::vector<Point> pts;
+  for (const Path& p : paths) pts.insert(pts.end(), p.begin(), p.end());
+  std::sort(pts.begin(), pts.end(),
+            [](Point a, Point b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+  pts.erase(std::unique(pts.begin(), pts.end()), pts.end());
+  if (pts.size() < 3) return {Path(pts.begin(), pts.end())};
+  Path hull(2 * pts.size());
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    while (k >= 2 && cross(hull[k - 2], hull[k - 1], pts[i]) <= 0) --k;
+    hull[k++] = pts[i];
+  }
+  for (std::size_t i = pts.size() - 1, lower = k + 1; i-- > 0;) {
+    while (k >= lower && cross(hull[k - 2], hull[k - 1], pts[i]) <= 0) --k;
+    hull[k++] = pts[i];
+  }
+  hull.resize(k - 1);
+  if (reverse) std::reverse(hull.begin(), hull.end());
+  return {hull};
+}
+
 }  // namespace roiclip::testing

@@ -27,8 +27,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const bool reverse = (h1 & 32) != 0;
   Paths subject = fuzz::decodePaths(in, mode, 1 + ((h1 >> 3) & 3), 32);
   Paths clipPaths = fuzz::decodePaths(in, mode, 4, 32);
-  if ((h0 & 64) != 0) clipPaths = fuzz::convexHull(clipPaths, reverse);
-  if ((h0 & 128) != 0) subject = fuzz::convexHull(subject, reverse);
+  if ((h0 & 64) != 0) clipPaths = testing::convexHull(clipPaths, reverse);
+  if ((h0 & 128) != 0) subject = testing::convexHull(subject, reverse);
   PolygonSet result;
   fuzz::expectDocumentedErrors(
       "clip", [&] { result = clip(op, subject, clipPaths, subjectRule, clipRule); }, true);

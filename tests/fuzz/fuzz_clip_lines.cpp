@@ -24,7 +24,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const int mode = h1 & 7;
   const Paths lines = fuzz::decodePaths(in, mode, 1 + ((h1 >> 3) & 3), 24);
   Paths region = fuzz::decodePaths(in, mode, 3, 32);
-  if ((h0 & 4) != 0) region = fuzz::convexHull(region, (h0 & 8) != 0);
+  if ((h0 & 4) != 0) region = testing::convexHull(region, (h0 & 8) != 0);
   Paths inside, outside;
   fuzz::expectDocumentedErrors(
       "clipLines",
