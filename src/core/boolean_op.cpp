@@ -26,11 +26,9 @@ PolygonSet intersectConvexRing(const Paths& other, FillRule otherRule, int other
   if (!isFilled(convexRule, convexOrientation(convexRing))) return {};
   Combination how;
   how.subjectRule = otherRule;
-  std::vector<ExactEdge>& clipped = tClipped;
-  preclipConvex(snapRings(other, otherOperand, grid), convexRing, clipped);
-  PolygonSet result = resolve({}, clipped, how, grid);
-  recycle(clipped);
-  return result;
+  const RecycleOnExit<ExactEdge> recycled(tClipped);
+  preclipConvex(snapRings(other, otherOperand, grid), convexRing, tClipped);
+  return resolve({}, tClipped, how, grid);
 }
 
 }  // namespace

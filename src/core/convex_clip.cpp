@@ -122,6 +122,7 @@ void preclipConvex(const std::vector<std::vector<IPoint>>& rings,
   out.reserve(vertexCount + 16);
   std::vector<Vertex>& path = tPath;
   std::vector<Vertex>& next = tNext;
+  const RecycleOnExit<Vertex> recyclePath(path), recycleNext(next);
   const std::size_t sides = clipRing.size();
   for (const std::vector<IPoint>& ring : rings) {
     // Rings entirely inside every half-plane pass unchanged; rings entirely outside one of them
@@ -166,8 +167,6 @@ void preclipConvex(const std::vector<std::vector<IPoint>>& rings,
       out.push_back(e);
     }
   }
-  recycle(path);
-  recycle(next);
 }
 
 }  // namespace roiclip::detail

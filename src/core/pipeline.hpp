@@ -26,6 +26,19 @@ void recycle(std::vector<T>& v) {
   }
 }
 
+/// recycle() at scope exit, also when the scope is left by an exception.
+template <class T>
+class RecycleOnExit {
+ public:
+  explicit RecycleOnExit(std::vector<T>& v) : v_(v) {}
+  RecycleOnExit(const RecycleOnExit&) = delete;
+  RecycleOnExit& operator=(const RecycleOnExit&) = delete;
+  ~RecycleOnExit() { recycle(v_); }
+
+ private:
+  std::vector<T>& v_;
+};
+
 /// Free the arrays one stage keeps for this thread (roiclip::releaseThreadBuffers()).
 void releaseSweepBuffers();
 void releasePreclipBuffers();

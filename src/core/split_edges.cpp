@@ -107,7 +107,7 @@ class Sweep {
 
   Sweep(const Sweep&) = delete;
   Sweep& operator=(const Sweep&) = delete;
-  ~Sweep() {
+  ~Sweep() {          // the arrays are recycled also when the sweep throws
     status_.clear();  // before the node handles in where_ are dropped
     recycle(active_);
     recycle(initial_);
