@@ -33,6 +33,7 @@
 
 #include <roiclip/apriltag/detector.hpp>
 #include <roiclip/apriltag/projective.hpp>
+#include <roiclip/apriltag/roi.hpp>
 #include <roiclip/geometry.hpp>
 
 namespace {
@@ -326,28 +327,18 @@ Json pathsJson(const Paths& paths) {
   return out;
 }
 
-Json boardJson() {
-  Json board;
-  board["family"] = kFamily;
-  board["units"] = "mm";
-  board["size"] = {kBoardWidth, kBoardHeight};
-  Json tags = Json::array();
+// The board file, in the format roiclip::apriltag::Board reads.
+std::string boardFile() {
+  roiclip::apriltag::Board board;
+  board.family = kFamily;
+  board.units = "mm";
+  board.size = glm::dvec2{kBoardWidth, kBoardHeight};
   for (const BoardTag& tag : kBoardTags) {
     const auto c = tagCorners(tag.centre);
-    Json t;
-    t["id"] = tag.id;
-    t["corners"] = {{"top_left", {c[3].x, c[3].y}},
-                    {"top_right", {c[2].x, c[2].y}},
-                    {"bottom_right", {c[1].x, c[1].y}},
-                    {"bottom_left", {c[0].x, c[0].y}}};
-    tags.push_back(t);
+    board.tags[tag.id] = c;
   }
-  board["tags"] = tags;
-  Json rois = Json::array();
-  for (const NamedPaths& roi : boardRois())
-    rois.push_back({{"name", roi.name}, {"paths", pathsJson(roi.paths)}});
-  board["rois"] = rois;
-  return board;
+  for (const NamedPaths& roi : boardRois()) board.rois.push_back({roi.name, roi.paths});
+  return board.toJson(1);
 }
 
 // The board's appearance at a board point (mm): white board, tag cells, or the table.
@@ -521,7 +512,7 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
   try {
     std::filesystem::create_directories(outDir);
-    std::ofstream(std::filesystem::path(outDir) / "board.json") << boardJson().dump(1) << '\n';
+    std::ofstream(std::filesystem::path(outDir) / "board.json") << boardFile();
     const BoardTexture texture;
     const GeosContext geos;
     int index = 1;

@@ -4,6 +4,8 @@
 
 #include <cmath>
 #include <cstdio>
+#include <fstream>
+#include <sstream>
 #include <string>
 
 #include <opencv2/core.hpp>
@@ -52,6 +54,33 @@ TEST(AprilTagBoard, BundledBoardLoads) {
   EXPECT_EQ(board.tags.size(), 4u);
   EXPECT_NO_THROW((void)board.roi("inspection"));
   EXPECT_NO_THROW((void)board.roi("window"));
+}
+
+// toJson() is what roiclip-make-scenes writes images/board.json with: it must give the bundled
+// file byte for byte, and read back to an equal board.
+TEST(AprilTagBoard, ToJsonWritesTheBundledFileAndReadsBack) {
+  const std::string file = std::string(ROICLIP_IMAGES) + "/board.json";
+  std::ifstream in(file, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  const ra::Board board = ra::Board::fromJson(text.str(), file);
+  EXPECT_EQ(board.units, "mm");
+  ASSERT_TRUE(board.size.has_value());
+  EXPECT_EQ(*board.size, glm::dvec2(400, 300));
+  EXPECT_EQ(board.toJson(1), text.str());
+
+  const ra::Board again = ra::Board::fromJson(board.toJson(-1));
+  EXPECT_EQ(again.family, board.family);
+  EXPECT_EQ(again.tags, board.tags);
+  ASSERT_EQ(again.rois.size(), board.rois.size());
+  for (std::size_t i = 0; i < board.rois.size(); ++i) {
+    EXPECT_EQ(again.rois[i].name, board.rois[i].name);
+    EXPECT_EQ(again.rois[i].paths, board.rois[i].paths);
+  }
+  ra::Board bare;  // no units, no size: neither is written
+  bare.tags[7] = board.tags.begin()->second;
+  EXPECT_EQ(bare.toJson(-1).find("units"), std::string::npos);
+  EXPECT_EQ(ra::Board::fromJson(bare.toJson(-1)).tags, bare.tags);
 }
 
 TEST(AprilTagBoardErrors, MalformedJson) {

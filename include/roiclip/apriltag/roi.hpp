@@ -9,13 +9,14 @@
 //   const roiclip::apriltag::Detector detector;                  // tag36h11
 //   const auto tags = detector.detect(image);                      // cv::Mat, gray or BGR
 //   const auto board = roiclip::apriltag::Board::load("board.json");
-//   const roiclip::apriltag::RoiResult roi = roiclip::apriltag::boardRoi(board, tags, "inspection");
-//   if (!roi) std::cerr << roi.missing().describe() << '\n';   // e.g. "... missing [2]"
-//   else inside = roiclip::intersect(contours, roi.value(), roiclip::FillRule::NonZero);
+//   const roiclip::apriltag::RoiResult roi = roiclip::apriltag::boardRoi(board, tags,
+//   "inspection"); if (!roi) std::cerr << roi.missing().describe() << '\n';   // e.g. "... missing
+//   [2]" else inside = roiclip::intersect(contours, roi.value(), roiclip::FillRule::NonZero);
 #pragma once
 
 #include <array>
 #include <map>
+#include <optional>
 #include <string>
 #include <utility>
 #include <variant>
@@ -121,6 +122,8 @@ struct Board {
   /// upright tag), in board units.
   std::map<int, std::array<glm::dvec2, 4>> tags;
   std::vector<BoardRoi> rois;
+  std::string units;               ///< board frame unit ("mm"); informative, empty if not given
+  std::optional<glm::dvec2> size;  ///< board width and height in `units`; informative
 
   /// Parse a board from JSON text (format in images/README.md). `source` names the input in
   /// error messages. @throws InvalidInputError on malformed JSON, a missing field, an unknown
@@ -128,6 +131,10 @@ struct Board {
   static Board fromJson(const std::string& text, const std::string& source = "board");
   /// Read and parse a board file. @throws InvalidInputError as fromJson or if unreadable.
   static Board load(const std::string& path);
+  /// The board as JSON text that fromJson() reads back to an equal board: family, units and
+  /// size (when set), every tag with its four corners, every ROI.
+  /// @param indent spaces per indentation level, or -1 for a single line.
+  [[nodiscard]] std::string toJson(int indent = 1) const;
   /// The ROI called `name`. @throws InvalidInputError naming the missing ROI.
   [[nodiscard]] const BoardRoi& roi(const std::string& name) const;
 };

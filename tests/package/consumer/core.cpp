@@ -1,4 +1,4 @@
-// A downstream project: intersect two squares through the installed roiclip package.
+// roiclip::core through the installed package: intersect two squares.
 #include <roiclip/roiclip.hpp>
 
 #include <iostream>

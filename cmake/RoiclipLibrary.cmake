@@ -1,0 +1,24 @@
+# roiclip_add_library(COMPONENT SOURCES file... [PUBLIC dep...] [PRIVATE dep...])
+#
+# One library component: target roiclip_COMPONENT, alias roiclip::COMPONENT, warnings, install,
+# and its own export file (roiclip-COMPONENT-targets.cmake), so that
+# find_package(roiclip COMPONENTS core) loads the core alone and needs only its dependencies
+# (cmake/roiclipConfig.cmake.in). Header-only private dependencies go in PRIVATE wrapped in
+# $<BUILD_INTERFACE:...>: a static library's private target dependencies are otherwise exported
+# as link-only requirements that every consumer would have to find.
+function(roiclip_add_library component)
+  cmake_parse_arguments(ARG "" "" "SOURCES;PUBLIC;PRIVATE" ${ARGN})
+  set(target roiclip_${component})
+  add_library(${target} ${ARG_SOURCES})
+  add_library(roiclip::${component} ALIAS ${target})
+  set_target_properties(${target} PROPERTIES EXPORT_NAME ${component} OUTPUT_NAME roiclip_${component}
+                                             POSITION_INDEPENDENT_CODE ON)
+  target_link_libraries(${target} PUBLIC ${ARG_PUBLIC} PRIVATE ${ARG_PRIVATE})
+  roiclip_set_warnings(${target})
+  install(TARGETS ${target} EXPORT roiclip_${component}_targets
+          ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR} LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
+          RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+  install(EXPORT roiclip_${component}_targets NAMESPACE roiclip::
+          FILE roiclip-${component}-targets.cmake DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/roiclip)
+  set_property(GLOBAL APPEND PROPERTY ROICLIP_COMPONENTS ${component})
+endfunction()
