@@ -98,10 +98,34 @@ std::string matTypeName(const cv::Mat& image) {
   return out.str();
 }
 
+// "tag36h11,tag25h9" -> each family once, in the order given.
+std::vector<const FamilyEntry*> parseFamilies(const std::string& list) {
+  std::vector<const FamilyEntry*> families;
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t end = list.find(',', start);
+    const std::string name = list.substr(start, end == std::string::npos ? end : end - start);
+    const FamilyEntry* entry = &findFamily(name);
+    if (std::find(families.begin(), families.end(), entry) != families.end()) {
+      throw InvalidInputError("AprilTag family '" + name + "' is listed twice in '" + list + "'");
+    }
+    families.push_back(entry);
+    if (end == std::string::npos) return families;
+    start = end + 1;
+  }
+}
+
 void checkOptions(const DetectorOptions& o) {
-  if (!(o.quadDecimate >= 1.0f) || !std::isfinite(o.quadDecimate)) {
-    throw InvalidInputError("DetectorOptions::quadDecimate must be a finite value >= 1, got " +
+  if (!std::isfinite(o.quadDecimate) || !(o.quadDecimate == 0.0f || o.quadDecimate >= 1.0f)) {
+    throw InvalidInputError("DetectorOptions::quadDecimate must be 0 (automatic) or >= 1, got " +
                             std::to_string(o.quadDecimate));
+  }
+  if (o.maxHamming < 0 || o.maxHamming > 3) {
+    throw InvalidInputError("DetectorOptions::maxHamming must be in 0..3, got " +
+                            std::to_string(o.maxHamming));
+  }
+  if (!std::isfinite(o.minDecisionMargin) || o.minDecisionMargin < 0) {
+    throw InvalidInputError("DetectorOptions::minDecisionMargin must be finite and >= 0");
   }
   if (!std::isfinite(o.quadSigma))
     throw InvalidInputError("DetectorOptions::quadSigma is not finite");
@@ -122,6 +146,17 @@ void checkOptions(const DetectorOptions& o) {
 constexpr double kAprilTagToOpenCv = -0.5;
 
 }  // namespace
+
+float autoQuadDecimate(int width, int height) {
+  constexpr float kSteps[] = {1.5f, 2, 3, 4, 5, 6, 8, 10, 12, 16};
+  float chosen = 1.0f;
+  const double pixels = static_cast<double>(std::max(width, 0)) * std::max(height, 0);
+  for (float step : kSteps) {
+    if (pixels / (static_cast<double>(step) * step) < kAutoDecimatePixels) break;
+    chosen = step;
+  }
+  return chosen;
+}
 
 glm::dvec2 Detection::tagToImage(glm::dvec2 tagPoint) const {
   return detail::applyHomography(homography, tagPoint);
@@ -153,21 +188,25 @@ cv::Mat renderTag(const std::string& family, int id, int* blackBorderCells) {
 }
 
 struct Detector::Impl {
-  explicit Impl(DetectorOptions o) : options(std::move(o)), family(findFamily(options.family)) {
+  explicit Impl(DetectorOptions o) : options(std::move(o)) {
+    for (const FamilyEntry* entry : parseFamilies(options.family)) {
+      families.push_back(std::make_unique<FamilyHandle>(*entry));
+    }
     detector.reset(apriltag_detector_create());
     if (!detector) throw Error("apriltag_detector_create failed");
-    detector->quad_decimate = options.quadDecimate;
     detector->quad_sigma = options.quadSigma;
     detector->refine_edges = options.refineEdges;
     detector->nthreads = options.threads;
     detector->decode_sharpening = options.decodeSharpening;
-    apriltag_detector_add_family_bits(detector.get(), family.get(), options.maxBitsCorrected);
+    for (const auto& family : families) {
+      apriltag_detector_add_family_bits(detector.get(), family->get(), options.maxBitsCorrected);
+    }
   }
 
   DetectorOptions options;
   // Declaration order matters: members are destroyed in reverse, so the detector (whose destroy
-  // function still walks its families' decode tables) goes before the family it uses.
-  FamilyHandle family;
+  // function still walks its families' decode tables) goes before the families it uses.
+  std::vector<std::unique_ptr<FamilyHandle>> families;
   std::unique_ptr<apriltag_detector_t, DetectorDeleter> detector;
   std::mutex mutex;
 };
@@ -187,7 +226,15 @@ const DetectorOptions& Detector::options() const {
 }
 
 std::vector<Detection> Detector::detect(cv::InputArray input) const {
+  return detectReport(input).tags;
+}
+
+DetectionReport Detector::detectReport(cv::InputArray input, float quadDecimate) const {
   if (!impl_) throw Error("roiclip::apriltag::Detector used after it was moved from");
+  if (!std::isfinite(quadDecimate) || !(quadDecimate == 0.0f || quadDecimate >= 1.0f)) {
+    throw InvalidInputError("AprilTag detect: quadDecimate must be 0 or >= 1, got " +
+                            std::to_string(quadDecimate));
+  }
   const cv::Mat image = input.getMat();  // a view for cv::Mat input, no copy
   if (image.empty()) throw InvalidInputError("AprilTag detect: the input image is empty");
   if (image.dims != 2 || image.depth() != CV_8U ||
@@ -200,15 +247,20 @@ std::vector<Detection> Detector::detect(cv::InputArray input) const {
   // libapriltag 3.3 crashes (out-of-bounds read in apriltag_quad_thresh) on images whose
   // decimated height is below 3 rows (1x1, 100x2, 100x4 at decimate 2, ...). No tag fits in
   // so few pixels anyway.
-  const int decimate = std::max(1, static_cast<int>(std::ceil(impl_->options.quadDecimate)));
-  if (std::min(image.rows, image.cols) < 3 * decimate) return {};
+  DetectionReport report;
+  report.quadDecimate = quadDecimate > 0 ? quadDecimate
+                        : impl_->options.quadDecimate > 0
+                            ? impl_->options.quadDecimate
+                            : autoQuadDecimate(image.cols, image.rows);
+  const int decimate = std::max(1, static_cast<int>(std::ceil(report.quadDecimate)));
+  if (std::min(image.rows, image.cols) < 3 * decimate) return report;
 
   cv::Mat gray;
   if (image.channels() == 3) {
     cv::cvtColor(image, gray, cv::COLOR_BGR2GRAY);
   } else if (image.channels() == 4) {
     cv::cvtColor(image, gray, cv::COLOR_BGRA2GRAY);
-  } else if (impl_->options.quadSigma != 0.0f && impl_->options.quadDecimate <= 1.0f) {
+  } else if (impl_->options.quadSigma != 0.0f && report.quadDecimate <= 1.0f) {
     // Without decimation libapriltag blurs (or sharpens) the input buffer in place.
     gray = image.clone();
   } else {
@@ -221,6 +273,7 @@ std::vector<Detection> Detector::detect(cv::InputArray input) const {
   std::vector<Detection> result;
   {
     std::lock_guard<std::mutex> lock(impl_->mutex);
+    impl_->detector->quad_decimate = report.quadDecimate;
     std::unique_ptr<zarray_t, DetectionsDeleter> found(
         apriltag_detector_detect(impl_->detector.get(), &wrapped));
     if (!found) throw Error("apriltag_detector_detect failed");
@@ -241,15 +294,19 @@ std::vector<Detection> Detector::detect(cv::InputArray input) const {
       result.push_back(std::move(d));
     }
   }
+  const auto byId = [](const Detection& a, const Detection& b) {
+    return a.id != b.id ? a.id < b.id : a.centre.x < b.centre.x;
+  };
+  std::sort(result.begin(), result.end(), byId);
   for (Detection& d : result) {
     // Fit to the (shifted) corners in our tag frame rather than converting libapriltag's H, whose
     // ideal frame is 2 units wide and in its pixel convention.
     d.homography = detail::tagFrameHomography(d.corners);
+    const bool doubtful = d.hamming > impl_->options.maxHamming ||
+                          d.decisionMargin < impl_->options.minDecisionMargin;
+    (doubtful ? report.rejected : report.tags).push_back(std::move(d));
   }
-  std::sort(result.begin(), result.end(), [](const Detection& a, const Detection& b) {
-    return a.id != b.id ? a.id < b.id : a.centre.x < b.centre.x;
-  });
-  return result;
+  return report;
 }
 
 }  // namespace roiclip::apriltag

@@ -370,6 +370,93 @@ TEST(AprilTagDetectorErrors, BadOptions) {
   ra::DetectorOptions bits;
   bits.maxBitsCorrected = 4;
   EXPECT_THROW(ra::Detector{bits}, roiclip::InvalidInputError);
+  ra::DetectorOptions hamming;
+  hamming.maxHamming = 4;
+  EXPECT_THROW(ra::Detector{hamming}, roiclip::InvalidInputError);
+  ra::DetectorOptions margin;
+  margin.minDecisionMargin = -1;
+  EXPECT_THROW(ra::Detector{margin}, roiclip::InvalidInputError);
+}
+
+TEST(AprilTagDetector, AutomaticDecimationFollowsTheImageSize) {
+  EXPECT_EQ(ra::autoQuadDecimate(640, 480), 1.0f);
+  EXPECT_EQ(ra::autoQuadDecimate(1000, 700), 1.0f);
+  EXPECT_EQ(ra::autoQuadDecimate(1280, 960), 1.5f);
+  EXPECT_EQ(ra::autoQuadDecimate(1920, 1080), 2.0f);
+  EXPECT_EQ(ra::autoQuadDecimate(3840, 2160), 4.0f);
+  EXPECT_EQ(ra::autoQuadDecimate(8000, 6000), 8.0f);
+  EXPECT_EQ(ra::autoQuadDecimate(0, 0), 1.0f);
+  // The factor used is reported; a per-call factor overrides the options.
+  const cv::Mat image = canvasWithTag(3, 40, 40);
+  const ra::Detector detector;
+  EXPECT_EQ(detector.detectReport(image).quadDecimate, 1.0f);
+  const ra::DetectionReport forced = detector.detectReport(image, 2.0f);
+  EXPECT_EQ(forced.quadDecimate, 2.0f);
+  ASSERT_EQ(forced.tags.size(), 1u);
+  EXPECT_EQ(forced.tags[0].id, 3);
+  EXPECT_THROW((void)detector.detectReport(image, 0.5f), roiclip::InvalidInputError);
+}
+
+// The tag of canvasWithTag() with one payload cell inverted: it decodes with one corrected bit.
+cv::Mat canvasWithOneBitFlipped(int id) {
+  cv::Mat tag = ra::renderTag("tag36h11", id);
+  tag.at<unsigned char>(4, 4) = static_cast<unsigned char>(255 - tag.at<unsigned char>(4, 4));
+  cv::Mat big;
+  cv::resize(tag, big, cv::Size(), kCell, kCell, cv::INTER_NEAREST);
+  cv::Mat canvas(360, 400, CV_8UC1, cv::Scalar(255));
+  big.copyTo(canvas(cv::Rect(40, 40, big.cols, big.rows)));
+  cv::GaussianBlur(canvas, canvas, cv::Size(0, 0), 1.0);
+  return canvas;
+}
+
+TEST(AprilTagDetector, CorrectedDetectionsAreRejectedUnlessAllowed) {
+  const cv::Mat image = canvasWithOneBitFlipped(5);
+  const ra::DetectionReport strict = ra::Detector().detectReport(image);
+  EXPECT_TRUE(strict.tags.empty());
+  ASSERT_EQ(strict.rejected.size(), 1u);
+  EXPECT_EQ(strict.rejected[0].id, 5);
+  EXPECT_EQ(strict.rejected[0].hamming, 1);
+
+  ra::DetectorOptions lenient;
+  lenient.maxHamming = 1;
+  const ra::DetectionReport accepted = ra::Detector(lenient).detectReport(image);
+  ASSERT_EQ(accepted.tags.size(), 1u);
+  EXPECT_EQ(accepted.tags[0].hamming, 1);
+  EXPECT_TRUE(accepted.rejected.empty());
+}
+
+TEST(AprilTagDetector, LowDecisionMarginsAreRejected) {
+  const cv::Mat image = canvasWithTag(9, 40, 40);
+  const ra::DetectionReport plain = ra::Detector().detectReport(image);
+  ASSERT_EQ(plain.tags.size(), 1u);
+  ra::DetectorOptions picky;
+  picky.minDecisionMargin = plain.tags[0].decisionMargin + 1;
+  const ra::DetectionReport report = ra::Detector(picky).detectReport(image);
+  EXPECT_TRUE(report.tags.empty());
+  ASSERT_EQ(report.rejected.size(), 1u);
+  EXPECT_EQ(report.rejected[0].id, 9);
+}
+
+TEST(AprilTagDetector, SeveralFamiliesAtOnce) {
+  cv::Mat image = canvasWithTag(3, 20, 40);
+  const cv::Mat other = canvasWithTag(4, 220, 40, -1, "tag25h9");
+  other(cv::Rect(200, 0, 200, 360)).copyTo(image(cv::Rect(200, 0, 200, 360)));
+  ra::DetectorOptions both;
+  both.family = "tag36h11,tag25h9";
+  const std::vector<ra::Detection> found = ra::Detector(both).detect(image);
+  ASSERT_EQ(found.size(), 2u);
+  EXPECT_EQ(found[0].id, 3);
+  EXPECT_EQ(found[0].family, "tag36h11");
+  EXPECT_EQ(found[1].id, 4);
+  EXPECT_EQ(found[1].family, "tag25h9");
+  // One family alone sees only its own tag.
+  EXPECT_EQ(ra::Detector().detect(image).size(), 1u);
+  ra::DetectorOptions twice;
+  twice.family = "tag36h11,tag36h11";
+  EXPECT_THROW(ra::Detector{twice}, roiclip::InvalidInputError);
+  ra::DetectorOptions unknown;
+  unknown.family = "tag36h11,tag99h1";
+  EXPECT_THROW(ra::Detector{unknown}, roiclip::InvalidInputError);
 }
 
 TEST(AprilTagDetectorErrors, MovedFromDetectorThrows) {

@@ -399,6 +399,35 @@ TEST_P(AprilTagScene, Detection) {
   }
 }
 
+// A camera-resolution photo: scene_01 (800 x 600) upscaled 10x to 8000 x 6000. With the default
+// (automatic) decimation quads are searched on 1000 x 750 pixels and refined at full resolution:
+// every tag is found, with corners within half a pixel of the original scene's resolution.
+TEST(AprilTagCameraResolution, FindsEveryTagAtTheDefaults) {
+  const cv::Mat scene = cv::imread(kImages + "/scene_01.png", cv::IMREAD_GRAYSCALE);
+  ASSERT_FALSE(scene.empty());
+  constexpr double kScale = 10;
+  cv::Mat photo;
+  cv::resize(scene, photo, cv::Size(), kScale, kScale, cv::INTER_LINEAR);
+  ASSERT_EQ(photo.size(), cv::Size(8000, 6000));
+  const Truth truth = loadTruth("scene_01");
+  const ra::DetectionReport report = ra::Detector().detectReport(photo);
+  EXPECT_EQ(report.quadDecimate, 8.0f);
+  std::vector<int> ids;
+  double worst = 0;
+  for (const ra::Detection& d : report.tags) {
+    ids.push_back(d.id);
+    for (int k = 0; k < 4; ++k) {
+      // Pixel centres: x_photo + 0.5 = kScale * (x_scene + 0.5).
+      const glm::dvec2 expected = (truth.corners.at(d.id)[k] + 0.5) * kScale - 0.5;
+      worst = std::max(worst, dist(d.corners[k], expected) / kScale);
+    }
+  }
+  EXPECT_EQ(ids, (std::vector<int>{0, 1, 2, 3}));
+  EXPECT_LT(worst, 0.5);
+  std::printf("8000 x 6000: decimate %.1f, max corner error %.3f px of the 800 x 600 scene\n",
+              static_cast<double>(report.quadDecimate), worst);
+}
+
 TEST_P(AprilTagScene, BoardRoi) {
   {
     SCOPED_TRACE("BoardRoiWithinOnePixel");

@@ -55,14 +55,19 @@ struct Detection {
 
 /// Detector settings; the names follow libapriltag's apriltag_detector_t fields.
 struct DetectorOptions {
-  /// Tag family name; see availableFamilies(). Unknown names throw InvalidInputError.
+  /// Tag family name, or several separated by commas ("tag36h11,tag25h9"); see
+  /// availableFamilies(). Unknown or repeated names throw InvalidInputError.
   std::string family = "tag36h11";
-  /// Detect quads on an image decimated by this factor (>= 1). Faster, less accurate corners.
-  float quadDecimate = 1.0f;
+  /// Detect quads on an image decimated by this factor (>= 1), or 0 (the default) for a factor
+  /// chosen from each image's size by autoQuadDecimate(). Corners are refined on the full
+  /// resolution image either way (refineEdges), so decimation costs little corner accuracy; it
+  /// loses tags whose side, divided by the factor, falls below about 20 pixels.
+  float quadDecimate = 0.0f;
   /// Gaussian blur sigma applied to the quad-detection image (0 = off, negative = sharpen).
   /// The caller's image is never modified (see Detector::detect).
   float quadSigma = 0.0f;
-  /// Snap quad edges to strong gradients (recommended with quadDecimate > 1).
+  /// Snap quad edges to strong gradients of the full-resolution image (recommended with
+  /// quadDecimate > 1).
   bool refineEdges = true;
   /// libapriltag worker threads for one detect() call (>= 1).
   int threads = 1;
@@ -71,6 +76,27 @@ struct DetectorOptions {
   /// Number of bit errors the decoder may correct (0..3). 2 is libapriltag's default; larger
   /// values need much more memory for the big families.
   int maxBitsCorrected = 2;
+  /// Detections with more corrected bit errors than this (0..3) are rejected: a tag decoded
+  /// with corrections is often another pattern misread (a wrong family, print texture).
+  int maxHamming = 0;
+  /// Detections whose decision margin (libapriltag's decode quality) is below this are rejected.
+  double minDecisionMargin = 0.0;
+};
+
+/// Quads are searched on images of at least this many pixels when the decimation is automatic:
+/// about 0.5 MP, where tags of 20 pixels or more per side (after decimation) are still found.
+constexpr double kAutoDecimatePixels = 500'000;
+
+/// The decimation DetectorOptions::quadDecimate = 0 uses for a width x height image: the largest
+/// of 1, 1.5, 2, 3, 4, 5, 6, 8, 10, 12, 16 that leaves at least kAutoDecimatePixels pixels
+/// (so 1 up to about 1000 x 700, 2 for 1920 x 1080, 4 for 3840 x 2160, 8 for 8000 x 6000).
+float autoQuadDecimate(int width, int height);
+
+/// What one Detector::detectReport() call found.
+struct DetectionReport {
+  std::vector<Detection> tags;      ///< accepted detections, sorted by id (then centre x)
+  std::vector<Detection> rejected;  ///< decoded but over maxHamming or under minDecisionMargin
+  float quadDecimate = 1.0f;        ///< the decimation used
 };
 
 /// Family names this build supports (those libapriltag 3.3 ships): tag36h11, tag25h9, tag16h5,
@@ -114,6 +140,11 @@ class Detector {
   /// @throws InvalidInputError if the image is empty or not 8-bit with 1, 3 or 4 channels.
   /// @throws Error if this Detector was moved from.
   [[nodiscard]] std::vector<Detection> detect(cv::InputArray image) const;
+
+  /// As detect(), also returning the rejected detections and the decimation used.
+  /// @param quadDecimate overrides DetectorOptions::quadDecimate for this call when > 0 (for
+  ///        a finer second try after the automatic factor missed a tag).
+  [[nodiscard]] DetectionReport detectReport(cv::InputArray image, float quadDecimate = 0) const;
 
   [[nodiscard]] const DetectorOptions& options() const;
 
