@@ -10,31 +10,28 @@
 namespace roiclip::app {
 namespace {
 
-// Validates with the library's own parser so the CLI accepts exactly what parseFillRule() does.
-CLI::Validator fillRuleValidator() {
+// Validates with the library's own parser (parseFillRule, parseClipOp) so the CLI accepts exactly
+// what it does.
+template <class Result>
+CLI::Validator parserValidator(Result (*parse)(const char*), const char* names) {
   return CLI::Validator(
-      [](std::string& value) -> std::string {
+      [parse](std::string& value) -> std::string {
         try {
-          parseFillRule(value.c_str());
+          parse(value.c_str());
           return {};
         } catch (const InvalidInputError& e) {
           return e.what();
         }
       },
-      "evenodd|nonzero|positive|negative");
+      names);
+}
+
+CLI::Validator fillRuleValidator() {
+  return parserValidator(parseFillRule, "evenodd|nonzero|positive|negative");
 }
 
 CLI::Validator clipOpValidator() {
-  return CLI::Validator(
-      [](std::string& value) -> std::string {
-        try {
-          parseClipOp(value.c_str());
-          return {};
-        } catch (const InvalidInputError& e) {
-          return e.what();
-        }
-      },
-      "intersection|union|difference|xor");
+  return parserValidator(parseClipOp, "intersection|union|difference|xor");
 }
 
 // GeoJSON to stdout, or atomically to the file `output`.

@@ -22,9 +22,8 @@ struct Source {
 /// source (e.g. one from roiclip::io) is returned as it is.
 InvalidInputError nameSource(const InvalidInputError& e, std::initializer_list<Source> sources);
 
-/// simplify() on paths read from `source`; an InvalidInputError from the core is rethrown with
-/// `source` attached (InvalidInputError::withSource()), so it reads "SOURCE: path i, vertex j:
-/// ...".
+/// simplify() on paths read from `source`; an InvalidInputError from the core is rethrown naming
+/// `source` (nameSource()): "SOURCE: path i, vertex j: ...".
 PolygonSet simplifyInput(const Paths& paths, const std::string& source, FillRule rule,
                          const Grid& grid = {});
 
