@@ -18,13 +18,16 @@
 
 #include <roiclip/batch/run.hpp>
 
+#include "exit_codes.hpp"
+
 namespace run_detail {
 
 // Set by SIGINT/SIGTERM; the run stops starting images and finishes the ones in flight.
 inline std::atomic<bool> gCancel{false};
 
 inline void onSignal(int) {
-  if (gCancel.exchange(true)) std::_Exit(130);  // second Ctrl-C: stop now (temp files are hidden)
+  if (gCancel.exchange(true))
+    std::_Exit(roiclip::app::kExitInterrupted);  // second Ctrl-C: stop now (temp files are hidden)
 }
 
 constexpr const char* kRunHelp = R"(
@@ -169,7 +172,7 @@ class RunCommand {
       p.maxPixels = maxPixels_;
     } catch (const roiclip::InvalidInputError& e) {
       std::cerr << "roiclip run: error: " << e.what() << "\n";
-      return 2;
+      return roiclip::app::kExitBadInput;
     }
 
     std::signal(SIGINT, run_detail::onSignal);
@@ -203,10 +206,10 @@ class RunCommand {
       summary = batch::run(options, progress, &run_detail::gCancel);
     } catch (const roiclip::InvalidInputError& e) {
       std::cerr << "roiclip run: error: " << e.what() << "\n";
-      return 2;
+      return roiclip::app::kExitBadInput;
     } catch (const roiclip::Error& e) {
       std::cerr << "roiclip run: error: " << e.what() << "\n";
-      return 3;
+      return roiclip::app::kExitCannotWrite;
     }
     std::signal(SIGINT, SIG_DFL);
     std::signal(SIGTERM, SIG_DFL);
@@ -225,13 +228,13 @@ class RunCommand {
     }
     if (summary.interrupted) {
       std::cerr << "roiclip run: interrupted; run again to finish the remaining images\n";
-      return 130;
+      return roiclip::app::kExitInterrupted;
     }
     if (summary.total == 0) {
       std::cerr << "roiclip run: error: no images found in " << options.input.string() << "\n";
-      return 2;
+      return roiclip::app::kExitBadInput;
     }
-    return summary.allOk() ? 0 : 5;
+    return summary.allOk() ? roiclip::app::kExitOk : roiclip::app::kExitImagesFailed;
   }
 
  private:

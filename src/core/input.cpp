@@ -9,25 +9,23 @@
 namespace roiclip::detail {
 namespace {
 
-[[noreturn]] void rejectCoordinate(double v, double scale, const char* axis, std::size_t pathIndex,
-                                   std::size_t vertexIndex, int operand) {
-  const std::string where = std::string(operand == 0   ? "subject"
-                                        : operand == 1 ? "clip"
-                                                       : "line") +
-                            " path " + std::to_string(pathIndex) + ", vertex " +
-                            std::to_string(vertexIndex) + ": " + axis;
-  if (!std::isfinite(v)) throw InvalidInputError(where + " is not a finite number");
-  throw InvalidInputError(where + " = " + std::to_string(v) + " is outside the supported range +-" +
-                          std::to_string(double(Grid::kMaxUnits) / scale));
+// `label` names the operand in the error; the core's operand index (0 or 1, pipeline.hpp) is
+// not a label, since polylines are operand 0 too.
+[[noreturn]] void rejectCoordinate(double v, double scale, Axis axis, std::size_t pathIndex,
+                                   std::size_t vertexIndex, Operand label) {
+  const InputLocation where{"", label, pathIndex, vertexIndex, axis};
+  if (!std::isfinite(v)) throw InvalidInputError(where, "is not a finite number");
+  throw InvalidInputError(where, "= " + std::to_string(v) + " is outside the supported range +-" +
+                                     std::to_string(double(Grid::kMaxUnits) / scale));
 }
 
 // Round to the nearest grid unit, ties to even. Adding and subtracting 1.5 * 2^52 rounds any
 // |u| < 2^51 exactly in the default rounding mode, without a libm call.
-inline std::int64_t snap(double v, double scale, const char* axis, std::size_t pathIndex,
-                         std::size_t vertexIndex, int operand) {
+inline std::int64_t snap(double v, double scale, Axis axis, std::size_t pathIndex,
+                         std::size_t vertexIndex, Operand label) {
   const double u = v * scale;
   if (!(std::fabs(u) <= double(Grid::kMaxUnits))) {  // also NaN and infinity
-    rejectCoordinate(v, scale, axis, pathIndex, vertexIndex, operand);
+    rejectCoordinate(v, scale, axis, pathIndex, vertexIndex, label);
   }
   constexpr double kRound = 6755399441055744.0;  // 1.5 * 2^52
   // Not algebraically simplified: without -ffast-math the compiler keeps IEEE semantics.
@@ -67,12 +65,12 @@ void mergeStraightRuns(std::vector<IPoint>& ring) {
 }
 
 // Snap one path: validated grid points with consecutive repeats removed.
-void snapPath(const Path& path, std::size_t pathIndex, int operand, const Grid& grid,
+void snapPath(const Path& path, std::size_t pathIndex, Operand label, const Grid& grid,
               std::vector<IPoint>& out) {
   out.clear();
   for (std::size_t i = 0; i < path.size(); ++i) {
-    const IPoint q{snap(path[i].x, grid.scale, "x", pathIndex, i, operand),
-                   snap(path[i].y, grid.scale, "y", pathIndex, i, operand)};
+    const IPoint q{snap(path[i].x, grid.scale, Axis::X, pathIndex, i, label),
+                   snap(path[i].y, grid.scale, Axis::Y, pathIndex, i, label)};
     if (out.empty() || out.back() != q) out.push_back(q);
   }
 }
@@ -91,7 +89,7 @@ std::vector<std::vector<IPoint>> snapRings(const Paths& paths, int operand, cons
   std::vector<std::vector<IPoint>> rings;
   std::vector<IPoint> ring;
   for (std::size_t p = 0; p < paths.size(); ++p) {
-    snapPath(paths[p], p, operand, grid, ring);
+    snapPath(paths[p], p, operand == 0 ? Operand::Subject : Operand::Clip, grid, ring);
     while (ring.size() > 1 && ring.back() == ring.front()) ring.pop_back();
     mergeStraightRuns(ring);
     if (ring.size() >= 2) rings.push_back(ring);  // a point encloses nothing
@@ -121,7 +119,7 @@ void appendLineEdges(const Paths& lines, const Grid& grid, std::vector<InputEdge
   std::vector<IPoint> line;
   for (std::size_t p = 0; p < lines.size(); ++p) {
     firstEdge.push_back(out.size());
-    snapPath(lines[p], p, 2, grid, line);
+    snapPath(lines[p], p, Operand::Line, grid, line);
     // Interior vertices where the line goes straight on carry no shape; drop them.
     std::size_t kept = 0;
     for (const IPoint q : line) {

@@ -252,7 +252,7 @@ class Sweep {
       }
     }
 
-    mergeCoincident(p);
+    mergeCoincident();
 
     // The pieces starting at p take the status positions of the pieces through p: every one of
     // them lies between belowPiece and the piece above, so the nodes [lo, hi) are reused in
@@ -319,11 +319,11 @@ class Sweep {
     return {a.windBelow[0] + a.contribution[0], a.windBelow[1] + a.contribution[1]};
   }
 
-  // Sort the pieces starting at p by direction; merge runs of coincident closed ones into the
+  // Sort the pieces in starts_ by direction; merge runs of coincident closed ones into the
   // shortest and re-start the rest where it ends. Closed pieces whose contributions cancel are
   // dropped: they change no winding number (a spike out and back along itself). Open pieces are
   // never merged or dropped; they follow the closed piece of their direction, as in the status.
-  void mergeCoincident(const XPoint& p) {
+  void mergeCoincident() {
     std::sort(starts_.begin(), starts_.end(), [this](int a, int b) {
       const int s = crossSign(active_[a].direction(), active_[b].direction());
       if (s != 0) return s > 0;
@@ -350,7 +350,6 @@ class Sweep {
       i = j;
     }
     starts_.resize(kept);
-    (void)p;
   }
 
   void checkCrossing(int a, int b, const XPoint& p) {

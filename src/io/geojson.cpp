@@ -5,7 +5,6 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
-#include <initializer_list>
 #include <sstream>
 #include <utility>
 
@@ -18,9 +17,12 @@ namespace {
 
 using nlohmann::json;
 
+// The source is a field of the error; `where` (feature, polygon, ring, point) stays in the text.
 [[noreturn]] void fail(const std::string& source, const std::string& where,
                        const std::string& problem) {
-  throw InvalidInputError(source + ": " + (where.empty() ? "" : where + ": ") + problem);
+  InputLocation location;
+  location.source = source;
+  throw InvalidInputError(location, (where.empty() ? "" : where + ": ") + problem);
 }
 
 std::string typeName(const json& j) { return j.type_name(); }
@@ -291,27 +293,6 @@ json ringJson(const Path& ring) {
   return out;
 }
 
-// The core names the operand ("subject path 3, vertex 1: ...", "clip path ...", "line path ...");
-// swap that word for the source the operand was read from.
-struct Operand {
-  const char* word;
-  const std::string& source;
-};
-
-[[noreturn]] void rethrowWithSource(const InvalidInputError& e,
-                                    std::initializer_list<Operand> operands) {
-  const std::string message = e.what();
-  std::string sources;
-  for (const Operand& operand : operands) {
-    const std::string word = std::string(operand.word) + " ";
-    if (message.rfind(word, 0) == 0) {
-      throw InvalidInputError(operand.source + ": " + message.substr(word.size()));
-    }
-    sources += (sources.empty() ? "" : ", ") + operand.source;
-  }
-  throw InvalidInputError(sources + ": " + message);
-}
-
 void writeTextAtomically(const std::string& text, const std::string& file) {
   // Same folder as the target so that the rename cannot cross file systems; the pid keeps two
   // concurrent writers (and any user file called *.tmp) apart.
@@ -417,35 +398,6 @@ std::string linesToGeoJson(const Paths& lines, int indent) {
 
 void writeLinesGeoJson(const Paths& lines, const std::string& file, int indent) {
   writeTextAtomically(linesToGeoJson(lines, indent), file);
-}
-
-PolygonSet simplifyInput(const Paths& paths, const std::string& source, FillRule rule,
-                         const Grid& grid) {
-  try {
-    return simplify(paths, rule, grid);
-  } catch (const InvalidInputError& e) {
-    rethrowWithSource(e, {{"subject", source}});
-  }
-}
-
-PolygonSet clipInputs(ClipOp op, const Paths& subject, const std::string& subjectSource,
-                      const Paths& clipPaths, const std::string& clipSource, FillRule subjectRule,
-                      FillRule clipRule, const Grid& grid) {
-  try {
-    return clip(op, subject, clipPaths, subjectRule, clipRule, grid);
-  } catch (const InvalidInputError& e) {
-    rethrowWithSource(e, {{"subject", subjectSource}, {"clip", clipSource}});
-  }
-}
-
-Paths clipLinesInputs(const Paths& lines, const std::string& linesSource, const Paths& region,
-                      const std::string& regionSource, FillRule regionRule, LinePart part,
-                      const Grid& grid) {
-  try {
-    return clipLines(lines, region, regionRule, part, grid);
-  } catch (const InvalidInputError& e) {
-    rethrowWithSource(e, {{"line", linesSource}, {"clip", regionSource}});
-  }
 }
 
 }  // namespace roiclip::io

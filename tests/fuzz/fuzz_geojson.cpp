@@ -32,8 +32,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     for (const Path& p : paths) vertices += p.size();
     if (!parsed || vertices > 64) continue;
     // Arbitrary doubles: out-of-range coordinates are documented InvalidInputErrors.
-    fuzz::expectDocumentedErrors("simplifyInput", [&] {
-      const PolygonSet result = io::simplifyInput(paths, "<fuzz>", FillRule::NonZero);
+    fuzz::expectDocumentedErrors("simplify", [&] {
+      const PolygonSet result = simplify(paths, FillRule::NonZero);
       const std::string json = io::toGeoJson(result);
       Paths back;
       fuzz::expectDocumentedErrors(

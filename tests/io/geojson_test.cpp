@@ -227,26 +227,6 @@ TEST(ReadErrors, RingWithFewerThanThreeDistinctPoints) {
   EXPECT_DOUBLE_EQ(simplify(kept, FillRule::EvenOdd).area(), 50.0);
 }
 
-TEST(ReadErrors, CoordinateOutOfRangeNamesFileAndPath) {
-  const std::string file = kData + "out_of_range.json";
-  const Paths paths = readPaths(file);
-  expectInvalid([&] { simplifyInput(paths, file, FillRule::NonZero); },
-                {"out_of_range.json", "path 1, vertex 1", "outside the supported range"});
-  const Paths square = readPaths(kData + "square.geojson");
-  expectInvalid(
-      [&] {
-        clipInputs(ClipOp::Intersection, square, "square.geojson", paths, file, FillRule::EvenOdd,
-                   FillRule::EvenOdd);
-      },
-      {"out_of_range.json", "path 1, vertex 1"});
-  expectInvalid(
-      [&] {
-        clipInputs(ClipOp::Union, paths, file, square, "square.geojson", FillRule::EvenOdd,
-                   FillRule::EvenOdd);
-      },
-      {"out_of_range.json: path 1, vertex 1"});
-}
-
 // --- open polylines (clipLines input and output) ---
 
 TEST(ParseLines, LineStringKeepsEveryPointAndAltitudeIsIgnored) {
@@ -396,30 +376,6 @@ TEST(WriteLinesGeoJson, WritesFileAndLeavesNoTemporary) {
   EXPECT_THROW(writeLinesGeoJson(lines, dir + "/missing/lines.geojson"), Error);
   EXPECT_FALSE(fs::exists(dir + "/missing"));
   fs::remove_all(dir);
-}
-
-TEST(ClipLinesInputs, InsideAndOutsideOfASquare) {
-  const Paths lines = readLines(kData + "lines_cross.geojson");
-  const Paths square = readPaths(kData + "square.geojson");
-  // The square [0, 10]^2 is closed: the part of line 2 along its top edge is inside.
-  EXPECT_EQ(clipLinesInputs(lines, "l", square, "r", FillRule::EvenOdd),
-            (Paths{{{0, 5}, {5, 5}, {5, 10}}, {{2, 2}, {8, 2}}, {{0, 10}, {10, 10}}}));
-  EXPECT_EQ(
-      clipLinesInputs(lines, "l", square, "r", FillRule::EvenOdd, LinePart::Outside),
-      (Paths{{{-5, 5}, {0, 5}}, {{5, 10}, {5, 15}}, {{-2, 10}, {0, 10}}, {{10, 10}, {12, 10}}}));
-}
-
-TEST(ClipLinesInputs, CoreErrorsNameTheSource) {
-  const std::string far = kData + "out_of_range.json";
-  const Paths farLines = readLines(far);
-  const Paths lines = readLines(kData + "lines_cross.geojson");
-  const Paths square = readPaths(kData + "square.geojson");
-  expectInvalid(
-      [&] { clipLinesInputs(farLines, far, square, "square.geojson", FillRule::EvenOdd); },
-      {"out_of_range.json: path 1, vertex 1", "outside the supported range"});
-  expectInvalid(
-      [&] { clipLinesInputs(lines, "lines.geojson", readPaths(far), far, FillRule::NonZero); },
-      {"out_of_range.json: path 1, vertex 1", "outside the supported range"});
 }
 
 }  // namespace

@@ -102,21 +102,4 @@ std::string linesToGeoJson(const Paths& lines, int indent = -1);
 /// @throws Error when the file cannot be written.
 void writeLinesGeoJson(const Paths& lines, const std::string& file, int indent = -1);
 
-/// simplify() on paths read from `source`; an InvalidInputError from the core (coordinate out of
-/// range) is rethrown with `source` in front of its message.
-PolygonSet simplifyInput(const Paths& paths, const std::string& source, FillRule rule,
-                         const Grid& grid = {});
-
-/// clip() on paths read from two sources; core InvalidInputErrors are rethrown naming the source
-/// of the operand they concern.
-PolygonSet clipInputs(ClipOp op, const Paths& subject, const std::string& subjectSource,
-                      const Paths& clipPaths, const std::string& clipSource, FillRule subjectRule,
-                      FillRule clipRule, const Grid& grid = {});
-
-/// clipLines() on polylines and region paths read from two sources; core InvalidInputErrors
-/// ("line path i" / "clip path i") are rethrown naming the source they concern ("SOURCE: path i").
-Paths clipLinesInputs(const Paths& lines, const std::string& linesSource, const Paths& region,
-                      const std::string& regionSource, FillRule regionRule,
-                      LinePart part = LinePart::Inside, const Grid& grid = {});
-
 }  // namespace roiclip::io

@@ -1,5 +1,5 @@
-// Runs the built `roiclip` command line (ROICLIP_CLI) on the files in tests/data/io and checks
-// its output, its stderr and its exit codes.
+// Runs the built `roiclip` command line (ROICLIP_CLI): simplify, clip and clip-lines on the files
+// in tests/data/io; checks their output, their stderr and their exit codes.
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -11,6 +11,8 @@
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
+
+#include "exit_codes.hpp"
 
 namespace {
 
@@ -87,6 +89,23 @@ TEST_F(Cli, HelpDocumentsExitCodes) {
     EXPECT_EQ(r.exitCode, 0) << args;
     EXPECT_NE(r.out.find("Exit codes"), std::string::npos) << args;
     EXPECT_NE(r.out.find("2  invalid input"), std::string::npos) << args;
+  }
+}
+
+TEST_F(Cli, HelpPrintsTheExitCodeTable) {
+  using roiclip::app::exitCodesHelp;
+  using roiclip::app::ExitCodesOf;
+  const std::string geometry = exitCodesHelp(ExitCodesOf::Geometry);
+  EXPECT_EQ(geometry.rfind("Exit codes:\n  0  success\n  1  command-line usage error\n", 0), 0u)
+      << geometry;
+  EXPECT_NE(geometry.find("\n     fewer than 3 distinct points"), std::string::npos) << geometry;
+  EXPECT_EQ(geometry.find("130"), std::string::npos) << "run's codes are not the geometry's";
+  for (const char* args : {"--help", "simplify --help", "clip --help", "clip-lines --help"}) {
+    EXPECT_NE(run(args).out.find(geometry), std::string::npos) << args;
+  }
+  const CliRun batch = run("run --help");
+  if (batch.out.find("AprilTag ROI + contours") != std::string::npos) {  // built with batch
+    EXPECT_NE(batch.out.find(exitCodesHelp(ExitCodesOf::Run)), std::string::npos) << batch.out;
   }
 }
 
@@ -172,6 +191,25 @@ TEST_F(Cli, BadInputClipNamesTheBadOperand) {
                  "string_coordinate.json", "not a number");
   const CliRun r = run("clip " + good + " '" + kData + "bad_syntax.json'");
   EXPECT_EQ(r.err.find("square.geojson"), std::string::npos) << r.err;
+}
+
+// Core errors name the file of the operand they concern, whatever the files are called (the
+// message-matching code took a file name's first word for an operand label).
+TEST_F(Cli, BadInputFileNamedLikeAnOperand) {
+  const fs::path clipNamed = dir_ / "clip 1.json";
+  const fs::path subjectNamed = dir_ / "subject 2.json";
+  fs::copy_file(kData + "out_of_range.json", clipNamed);
+  fs::copy_file(kData + "square.geojson", subjectNamed);
+  const std::string at = ": path 1, vertex 1: x = 5000000.000000 is outside";
+  const CliRun asSubject = run("clip '" + clipNamed.string() + "' '" + subjectNamed.string() + "'");
+  expectBadInput(asSubject, clipNamed.string() + at, "supported range");
+  const CliRun asClip = run("clip '" + subjectNamed.string() + "' '" + clipNamed.string() + "'");
+  expectBadInput(asClip, clipNamed.string() + at, "supported range");
+  const CliRun asLines =
+      run("clip-lines '" + clipNamed.string() + "' '" + subjectNamed.string() + "'");
+  expectBadInput(asLines, clipNamed.string() + at, "supported range");
+  const CliRun bad = run("clip '" + subjectNamed.string() + "' '" + kData + "bad_syntax.json'");
+  EXPECT_EQ(bad.err.find("subject 2.json"), std::string::npos) << bad.err;
 }
 
 TEST_F(Cli, BadInputWritesNoOutputFile) {
