@@ -83,9 +83,11 @@ Paths traceEdges(cv::InputArray input) {
 
 void approximatePolylines(Paths& polylines, double epsilon) {
   for (Path& line : polylines) {
-    std::vector<cv::Point2d> in;
-    std::vector<cv::Point2d> approx;
-    for (const Point& p : line) in.emplace_back(p.x, p.y);
+    // cv::approxPolyDP takes int or float points only; float is exact for the pixel centres
+    // traceEdges() gives (up to 2^24 px).
+    std::vector<cv::Point2f> in;
+    std::vector<cv::Point2f> approx;
+    for (const Point& p : line) in.emplace_back(static_cast<float>(p.x), static_cast<float>(p.y));
     cv::approxPolyDP(in, approx, epsilon, false);
     line.clear();
     for (const auto& p : approx) line.emplace_back(p.x, p.y);

@@ -375,9 +375,26 @@ TEST(BatchEdges, SceneEdgesAreClippedToTheRoi) {
   EXPECT_DOUBLE_EQ(j["edges"]["length"].get<double>(), r.edgeLength);
 }
 
+TEST(BatchEdges, ApproxEpsilonAlsoSimplifiesTheEdges) {
+  // cv::approxPolyDP takes no double points; the edges once failed every image with --approx.
+  const cv::Mat image = cv::imread(kImages + "/scene_01.png", cv::IMREAD_GRAYSCALE);
+  rb::RunOptions options;
+  options.contours.openEdges = true;
+  const rb::ImageResult exact = rb::processImage(image, options);
+  options.contours.approxEpsilon = 1.5;
+  const rb::ImageResult approx = rb::processImage(image, options);
+  ASSERT_EQ(approx.status, rb::Status::Ok) << approx.reason;
+  ASSERT_EQ(exact.status, rb::Status::Ok) << exact.reason;
+  std::size_t exactPoints = 0, approxPoints = 0;
+  for (const auto& l : exact.edges) exactPoints += l.size();
+  for (const auto& l : approx.edges) approxPoints += l.size();
+  EXPECT_LT(approxPoints, exactPoints / 2);
+  EXPECT_NEAR(approx.edgeLength, exact.edgeLength, 0.2 * exact.edgeLength);
+}
+
 // --- core calls per image --------------------------------------------------------------------
 
-TEST(BatchCoreCalls, RoiOnceEachContourOnceAndTheMaskCheckDoesNotClip) {
+TEST(BatchCoreCalls, TwoPerContourPlusTwoAndTheMaskCheckDoesNotClip) {
   // One simplify of the ROI; per contour one simplify (input area) and one clip; one clip of
   // all contours together, which the mask check takes as it is: 2N + 2 for N contours.
   for (const char* scene : {"scene_01", "scene_04", "scene_07"}) {

@@ -118,5 +118,14 @@ TEST(Edges, TraceEdgesFollowsChainsAndLoops) {
   EXPECT_NEAR(polylineLength({lines[1]}), 2 * CV_PI * 10, 0.15 * 2 * CV_PI * 10);
 }
 
+TEST(Edges, ApproximatePolylinesKeepsEndsAndCorners) {
+  Paths lines = {{{0, 0}, {1, 0}, {2, 0}, {3, 0}, {3, 1}, {3, 2}}, {{5, 5}}};
+  approximatePolylines(lines, 0.5);
+  ASSERT_EQ(lines.size(), 2u);
+  EXPECT_EQ(lines[0], (Path{{0, 0}, {3, 0}, {3, 2}}));
+  EXPECT_EQ(lines[1].size(), 1u);
+  EXPECT_DOUBLE_EQ(polylineLength(lines), 5.0);
+}
+
 }  // namespace
 }  // namespace roiclip::opencv

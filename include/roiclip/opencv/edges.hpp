@@ -14,7 +14,8 @@ namespace roiclip::opencv {
 /// @throws InvalidInputError for another image type (an empty image gives no polylines).
 Paths traceEdges(cv::InputArray edges);
 
-/// cv::approxPolyDP (open curves) on every polyline, with epsilon in px.
+/// cv::approxPolyDP (open curves) on every polyline, with epsilon in px. The points pass
+/// through float (approxPolyDP takes no double): exact for pixel centres up to 2^24 px.
 void approximatePolylines(Paths& polylines, double epsilon);
 
 /// Total length of open polylines (px).
