@@ -34,6 +34,7 @@
 #include <roiclip/apriltag/detector.hpp>
 #include <roiclip/apriltag/projective.hpp>
 #include <roiclip/geometry.hpp>
+#include <roiclip/io/atomic_file.hpp>
 
 namespace {
 
@@ -508,7 +509,7 @@ void writeScene(const std::filesystem::path& dir, int index, const SceneSpec& sp
                   {"shape_grey", kShapeDark},
                   {"tag_black_grey", kTagBlack},
                   {"table_grey", kTable}};
-  std::ofstream(dir / (std::string(stem) + ".json")) << gt.dump(1) << '\n';
+  roiclip::io::writeFileAtomically(dir / (std::string(stem) + ".json"), gt.dump(1) + '\n');
   std::cout << png.string() << '\n';
 }
 
