@@ -35,6 +35,7 @@
 #include <roiclip/apriltag/projective.hpp>
 #include <roiclip/apriltag/roi.hpp>
 #include <roiclip/geometry.hpp>
+#include <roiclip/io/atomic_file.hpp>
 
 namespace {
 
@@ -499,7 +500,7 @@ void writeScene(const std::filesystem::path& dir, int index, const SceneSpec& sp
                   {"shape_grey", kShapeDark},
                   {"tag_black_grey", kTagBlack},
                   {"table_grey", kTable}};
-  std::ofstream(dir / (std::string(stem) + ".json")) << gt.dump(1) << '\n';
+  roiclip::io::writeFileAtomically(dir / (std::string(stem) + ".json"), gt.dump(1) + '\n');
   std::cout << png.string() << '\n';
 }
 

@@ -7,7 +7,7 @@
 // (libpng, libjpeg-turbo, libtiff, libwebp; all come with libopencv-dev), through their own
 // header-only entry points: png_read_info, jpeg_read_header, TIFFOpenExt (first directory only)
 // and WebPGetFeatures. The size they report is the size OpenCV would allocate.
-#include <roiclip/batch/image_file.hpp>
+#include "detail/image_file.hpp"
 
 #include <cctype>
 #include <csetjmp>

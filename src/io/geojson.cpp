@@ -8,9 +8,9 @@
 #include <sstream>
 #include <utility>
 
-#include <unistd.h>
-
 #include <nlohmann/json.hpp>
+
+#include <roiclip/io/atomic_file.hpp>
 
 namespace roiclip::io {
 namespace {
@@ -294,23 +294,7 @@ json ringJson(const Path& ring) {
 }
 
 void writeTextAtomically(const std::string& text, const std::string& file) {
-  // Same folder as the target so that the rename cannot cross file systems; the pid keeps two
-  // concurrent writers (and any user file called *.tmp) apart.
-  const std::string temp = file + ".roiclip-tmp-" + std::to_string(::getpid());
-  {
-    std::ofstream out(temp, std::ios::binary | std::ios::trunc);
-    if (!out) throw Error(file + ": cannot open " + temp + " for writing");
-    out << text;
-    out.close();
-    if (!out) {
-      std::remove(temp.c_str());
-      throw Error(file + ": write error");
-    }
-  }
-  if (std::rename(temp.c_str(), file.c_str()) != 0) {
-    std::remove(temp.c_str());
-    throw Error(file + ": cannot rename " + temp + " into place");
-  }
+  writeFileAtomically(file, text);
 }
 
 json featureCollection(json geometry, json properties) {

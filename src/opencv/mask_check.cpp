@@ -195,11 +195,11 @@ MaskComparison compareMasks(cv::InputArray expectedIn, cv::InputArray actualIn, 
   return c;
 }
 
-MaskCheck checkRoiClip(const Paths& subject, const Paths& roi, FillRule subjectRule,
-                       FillRule roiRule, cv::Size size, const MaskCheckOptions& options) {
+MaskCheck checkRoiClip(const Paths& subject, const Paths& roi, const PolygonSet& result,
+                       FillRule subjectRule, FillRule roiRule, cv::Size size,
+                       const MaskCheckOptions& options) {
   MaskCheck check;
-  check.clipped = clip(options.op, subject, roi, subjectRule, roiRule, options.grid);
-  const cv::Mat vectorMask = rasterize(check.clipped, size, options.grid);
+  const cv::Mat vectorMask = rasterize(result, size, options.grid);
 
   Paths edges = subject;
   edges.insert(edges.end(), roi.begin(), roi.end());

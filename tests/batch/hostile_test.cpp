@@ -14,8 +14,10 @@
 #include <nlohmann/json.hpp>
 #include <opencv2/imgcodecs.hpp>
 
-#include <roiclip/batch/image_file.hpp>
+#include <roiclip/batch/process.hpp>
 #include <roiclip/batch/run.hpp>
+
+#include "detail/image_file.hpp"
 
 #include "hostile_images.hpp"
 

@@ -11,8 +11,11 @@
 #include <opencv2/imgproc.hpp>
 
 #include <roiclip/batch/process.hpp>
-#include <roiclip/batch/run.hpp>
 #include <roiclip/opencv/rasterize.hpp>
+
+#include "detail/image_file.hpp"
+#include "detail/process.hpp"
+#include "detail/result_json.hpp"
 
 namespace rb = roiclip::batch;
 using Json = nlohmann::json;
@@ -219,13 +222,6 @@ TEST(BatchImageTypes, SixteenBitAndColourGiveTheSameResultAsGray) {
     EXPECT_EQ(r.contoursIn, ref.contoursIn);
     EXPECT_DOUBLE_EQ(r.clippedArea, ref.clippedArea);
   }
-  EXPECT_THROW(rb::toGray8(cv::Mat(), "x"), roiclip::InvalidInputError);
-  // Two channels are gray + alpha: the gray channel is used.
-  cv::Mat grayAlpha;
-  cv::merge(std::vector<cv::Mat>{gray, cv::Mat(gray.size(), CV_8UC1, cv::Scalar(255))}, grayAlpha);
-  EXPECT_EQ(cv::countNonZero(rb::toGray8(grayAlpha, "x") != gray), 0);
-  EXPECT_THROW(rb::toGray8(cv::Mat(4, 4, CV_8UC(5)), "x"), roiclip::InvalidInputError);
-  EXPECT_THROW(rb::toGray8(cv::Mat(4, 4, CV_32SC1), "x"), roiclip::InvalidInputError);
 }
 
 // --- failure paths ---------------------------------------------------------------------------
@@ -327,7 +323,7 @@ TEST(BatchOptions, MinAreaDropsSmallContours) {
 TEST(BatchJson, ResultJsonHasEveryFigure) {
   const cv::Mat image = cv::imread(kImages + "/scene_07.png", cv::IMREAD_GRAYSCALE);
   const rb::ImageResult r = rb::processImage(image, kDefaults);
-  const Json j = Json::parse(rb::resultToJson(r, "scene_07.png"));
+  const Json j = Json::parse(rb::detail::resultToJson(r, "scene_07.png"));
   EXPECT_EQ(j["image"], "scene_07.png");
   EXPECT_EQ(j["status"], "ok");
   EXPECT_EQ(j["tags"].size(), 4u);
@@ -353,28 +349,6 @@ TEST(BatchJson, ResultJsonHasEveryFigure) {
 
 namespace {
 
-TEST(BatchEdges, TraceEdgesFollowsChainsAndLoops) {
-  cv::Mat edges = cv::Mat::zeros(60, 80, CV_8U);
-  cv::line(edges, {5, 5}, {40, 20}, 255, 1, cv::LINE_8);  // an open chain
-  cv::circle(edges, {60, 40}, 10, 255, 1, cv::LINE_8);    // a closed loop
-  edges.at<uchar>(55, 5) = 255;                           // a single pixel
-  const std::vector<roiclip::Path> lines = rb::traceEdges(edges);
-  ASSERT_EQ(lines.size(), 3u);
-  std::size_t pixels = 0;
-  for (const auto& l : lines) pixels += l.size();
-  // Every edge pixel once, plus the loop's closing point.
-  EXPECT_EQ(pixels, static_cast<std::size_t>(cv::countNonZero(edges)) + 1);
-  const auto& chain = lines[0];
-  EXPECT_EQ(chain.front(), roiclip::Point(5, 5));
-  EXPECT_EQ(chain.back(), roiclip::Point(40, 20));
-  for (std::size_t i = 1; i < chain.size(); ++i) {  // 8-connected steps
-    EXPECT_LE(std::abs(chain[i].x - chain[i - 1].x), 1.0);
-    EXPECT_LE(std::abs(chain[i].y - chain[i - 1].y), 1.0);
-  }
-  EXPECT_EQ(lines[1].front(), lines[1].back());  // the loop is closed
-  EXPECT_NEAR(rb::polylineLength({lines[1]}), 2 * CV_PI * 10, 0.15 * 2 * CV_PI * 10);
-}
-
 TEST(BatchEdges, SceneEdgesAreClippedToTheRoi) {
   const cv::Mat image = cv::imread(kImages + "/scene_01.png", cv::IMREAD_GRAYSCALE);
   rb::RunOptions options;
@@ -397,8 +371,89 @@ TEST(BatchEdges, SceneEdgesAreClippedToTheRoi) {
   // The window holds the figure-eight stroke and the frame: their edges are most of the
   // clipped length, at least the window-clipped contour perimeter's order of magnitude.
   EXPECT_GT(r.edgeLength, 100.0);
-  const Json j = Json::parse(rb::resultToJson(r, "scene_01.png"));
+  const Json j = Json::parse(rb::detail::resultToJson(r, "scene_01.png"));
   EXPECT_DOUBLE_EQ(j["edges"]["length"].get<double>(), r.edgeLength);
+}
+
+TEST(BatchEdges, ApproxEpsilonAlsoSimplifiesTheEdges) {
+  // cv::approxPolyDP takes no double points; the edges once failed every image with --approx.
+  const cv::Mat image = cv::imread(kImages + "/scene_01.png", cv::IMREAD_GRAYSCALE);
+  rb::RunOptions options;
+  options.contours.openEdges = true;
+  const rb::ImageResult exact = rb::processImage(image, options);
+  options.contours.approxEpsilon = 1.5;
+  const rb::ImageResult approx = rb::processImage(image, options);
+  ASSERT_EQ(approx.status, rb::Status::Ok) << approx.reason;
+  ASSERT_EQ(exact.status, rb::Status::Ok) << exact.reason;
+  std::size_t exactPoints = 0, approxPoints = 0;
+  for (const auto& l : exact.edges) exactPoints += l.size();
+  for (const auto& l : approx.edges) approxPoints += l.size();
+  EXPECT_LT(approxPoints, exactPoints / 2);
+  EXPECT_NEAR(approx.edgeLength, exact.edgeLength, 0.2 * exact.edgeLength);
+}
+
+// --- core calls per image --------------------------------------------------------------------
+
+TEST(BatchCoreCalls, TwoPerContourPlusTwoAndTheMaskCheckDoesNotClip) {
+  // One simplify of the ROI; per contour one simplify (input area) and one clip; one clip of
+  // all contours together, which the mask check takes as it is: 2N + 2 for N contours.
+  for (const char* scene : {"scene_01", "scene_04", "scene_07"}) {
+    const cv::Mat image = cv::imread(kImages + "/" + scene + ".png", cv::IMREAD_GRAYSCALE);
+    rb::detail::CoreCalls calls;
+    const rb::ImageResult r = rb::detail::processCountingCoreCalls(image, kDefaults, calls);
+    ASSERT_EQ(r.status, rb::Status::Ok) << scene << ": " << r.reason;
+    const int n = r.contoursIn;
+    ASSERT_GT(n, 0) << scene;
+    EXPECT_EQ(calls.simplify, 1 + n) << scene;
+    EXPECT_EQ(calls.clip, n + 1) << scene;
+    EXPECT_EQ(calls.clipLines, 0) << scene;
+    EXPECT_EQ(calls.total(), 2 * n + 2) << scene;
+    // The same result as the uncounted pipeline.
+    const rb::ImageResult plain = rb::processImage(image, kDefaults);
+    EXPECT_EQ(plain.clippedArea, r.clippedArea) << scene;
+    EXPECT_EQ(plain.clipped.polygons.size(), r.clipped.polygons.size()) << scene;
+  }
+  // Open edges add one clipLines; no ROI means no core call at all.
+  const cv::Mat image = cv::imread(kImages + "/scene_01.png", cv::IMREAD_GRAYSCALE);
+  rb::RunOptions edges;
+  edges.contours.openEdges = true;
+  rb::detail::CoreCalls withEdges;
+  const rb::ImageResult e = rb::detail::processCountingCoreCalls(image, edges, withEdges);
+  ASSERT_EQ(e.status, rb::Status::Ok) << e.reason;
+  EXPECT_EQ(withEdges.clipLines, 1);
+  EXPECT_EQ(withEdges.total(), 2 * e.contoursIn + 3);
+  rb::detail::CoreCalls none;
+  const rb::ImageResult blank = rb::detail::processCountingCoreCalls(
+      cv::Mat(64, 64, CV_8UC1, cv::Scalar(255)), kDefaults, none);
+  EXPECT_EQ(blank.status, rb::Status::NoRoi);
+  EXPECT_EQ(none.total(), 0);
+}
+
+TEST(BatchCoreCalls, ClippedHoldsEveryContoursPartWithParentsAcrossContours) {
+  // ImageResult::clipped is all contours AND ROI in one clip: its area is the per-contour sum
+  // (contours do not overlap), and an island inside another contour's hole is that hole's
+  // child, which per-contour results alone cannot say (RETR_CCOMP makes the island a top-level
+  // contour of its own).
+  cv::Mat image = cv::imread(kImages + "/scene_07.png", cv::IMREAD_GRAYSCALE);
+  cv::rectangle(image, cv::Rect(250, 220, 160, 160), cv::Scalar(255), cv::FILLED);
+  cv::rectangle(image, cv::Rect(260, 230, 140, 140), cv::Scalar(0), cv::FILLED);
+  cv::rectangle(image, cv::Rect(290, 260, 80, 80), cv::Scalar(255), cv::FILLED);  // hole
+  cv::rectangle(image, cv::Rect(315, 285, 30, 30), cv::Scalar(0), cv::FILLED);    // island
+  const rb::ImageResult r = rb::processImage(image, kDefaults);
+  ASSERT_EQ(r.status, rb::Status::Ok) << r.reason;
+  EXPECT_NEAR(r.clippedArea, r.contourClippedAreaSum, 1e-9 * r.clippedArea);
+  int nested = 0;
+  for (const roiclip::Polygon& p : r.clipped.polygons) {
+    if (p.parent < 0) continue;
+    ++nested;
+    const roiclip::Polygon& outer = r.clipped.polygons[static_cast<std::size_t>(p.parent)];
+    ASSERT_GE(p.parentHole, 0);
+    EXPECT_LT(static_cast<std::size_t>(p.parentHole), outer.holes.size());
+  }
+  EXPECT_EQ(nested, 1);
+  for (const rb::ContourResult& c : r.contours) {
+    for (const roiclip::Polygon& p : c.clipped.polygons) EXPECT_EQ(p.parent, -1);
+  }
 }
 
 }  // namespace

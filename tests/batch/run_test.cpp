@@ -23,6 +23,11 @@
 #include <opencv2/imgproc.hpp>
 
 #include <roiclip/batch/run.hpp>
+#include <roiclip/io/atomic_file.hpp>
+
+#include "detail/folder.hpp"
+#include "detail/report.hpp"
+#include "temp_dir.hpp"
 
 namespace fs = std::filesystem;
 namespace rb = roiclip::batch;
@@ -33,26 +38,7 @@ namespace {
 const fs::path kImages = ROICLIP_IMAGES;
 const fs::path kData = ROICLIP_TEST_DATA;
 
-// A fresh folder per test (the pid keeps concurrent runs of the suite apart).
-class TempDir {
- public:
-  explicit TempDir(const std::string& name)
-      : path_(fs::temp_directory_path() /
-              ("roiclip_batch_" + std::to_string(::getpid()) + "_" + name)) {
-    fs::remove_all(path_);
-    fs::create_directories(path_);
-  }
-  ~TempDir() {
-    std::error_code ec;
-    fs::remove_all(path_, ec);
-  }
-  TempDir(const TempDir&) = delete;
-  TempDir& operator=(const TempDir&) = delete;
-  [[nodiscard]] const fs::path& path() const { return path_; }
-
- private:
-  fs::path path_;
-};
+using roiclip::testing::TempDir;
 
 std::string readText(const fs::path& file) {
   std::ifstream in(file, std::ios::binary);
@@ -126,7 +112,7 @@ TEST(BatchRun, BundledImagesEndToEnd) {
   }
   const auto csv = lines(readText(out / "summary.csv"));
   ASSERT_EQ(csv.size(), 9u);
-  EXPECT_EQ(csv[0], rb::kSummaryColumns);
+  EXPECT_EQ(csv[0], rb::detail::kSummaryColumns);
   EXPECT_EQ(csv[1].rfind("scene_01.png,ok,", 0), 0u) << csv[1];
   const Json summary = readJson(out / "summary.json");
   EXPECT_EQ(summary["images"].size(), 8u);
@@ -276,7 +262,8 @@ TEST(BatchRun, UnwritableOutputFolderThrows) {
   copyScene("scene_07", tmp.path() / "in" / "a.png");
   std::ofstream(tmp.path() / "file") << "a file, not a folder";
   EXPECT_THROW(rb::run(optionsFor(tmp.path() / "in", tmp.path() / "file" / "out")), roiclip::Error);
-  EXPECT_THROW(rb::writeFileAtomic(tmp.path() / "file" / "x.json", "{}"), roiclip::Error);
+  EXPECT_THROW(roiclip::io::writeFileAtomically(tmp.path() / "file" / "x.json", "{}"),
+               roiclip::Error);
 }
 
 TEST(BatchRun, RecursiveMirrorsFoldersInsideTheOutput) {
@@ -362,32 +349,12 @@ TEST(BatchRun, ReadsSixteenBitAndColourFiles) {
   EXPECT_DOUBLE_EQ(s.images[0].clippedArea, s.images[2].clippedArea);  // colour.bmp, g16.png
 }
 
-TEST(BatchRun, StaleTemporariesOfDeadRunsAreRemoved) {
-  const TempDir tmp("stale");
-  fs::create_directories(tmp.path() / "sub");
-  // A pid that has surely exited: a child we waited for.
-  const pid_t dead = ::fork();
-  if (dead == 0) ::_exit(0);
-  ::waitpid(dead, nullptr, 0);
-  const std::string deadTmp = ".a.json.tmp." + std::to_string(dead) + ".3";
-  const std::string liveTmp = ".b.json.tmp." + std::to_string(::getppid()) + ".0";
-  for (const std::string& f :
-       {deadTmp, liveTmp, std::string(".c.tmp.x.1"), std::string("d.json.tmp.1.1")}) {
-    std::ofstream(tmp.path() / "sub" / f) << "partial";
-  }
-  EXPECT_EQ(rb::removeStaleTemporaries(tmp.path()), 1u);
-  EXPECT_FALSE(fs::exists(tmp.path() / "sub" / deadTmp));
-  EXPECT_TRUE(fs::exists(tmp.path() / "sub" / liveTmp));  // its process still runs
-  EXPECT_TRUE(fs::exists(tmp.path() / "sub" / ".c.tmp.x.1"));
-  EXPECT_TRUE(fs::exists(tmp.path() / "sub" / "d.json.tmp.1.1"));
-}
-
 TEST(BatchRun, OutputNamesCannotEscape) {
-  EXPECT_EQ(rb::outputName("a/b/c.png"), "a/b/c");
-  EXPECT_EQ(rb::outputName("c.tar.png"), "c.tar");
-  EXPECT_EQ(rb::outputName("a/c.png", true), "a/c.png");
+  EXPECT_EQ(rb::detail::outputName("a/b/c.png"), "a/b/c");
+  EXPECT_EQ(rb::detail::outputName("c.tar.png"), "c.tar");
+  EXPECT_EQ(rb::detail::outputName("a/c.png", true), "a/c.png");
   for (const char* bad : {"../x.png", "a/../../x.png", "/etc/x.png", "./x.png", "a/./x.png", ""}) {
-    EXPECT_THROW((void)rb::outputName(bad), roiclip::InvalidInputError) << bad;
+    EXPECT_THROW((void)rb::detail::outputName(bad), roiclip::InvalidInputError) << bad;
   }
 }
 

@@ -27,6 +27,13 @@ using testing::SceneKind;
 constexpr FillRule kRules[] = {FillRule::EvenOdd, FillRule::NonZero, FillRule::Positive,
                                FillRule::Negative};
 
+// The core's clip of the operands, checked against the raster routes.
+MaskCheck clipAndCheck(const Paths& subject, const Paths& roi, FillRule subjectRule,
+                       FillRule roiRule, cv::Size size, const MaskCheckOptions& options = {}) {
+  const PolygonSet result = clip(options.op, subject, roi, subjectRule, roiRule, options.grid);
+  return checkRoiClip(subject, roi, result, subjectRule, roiRule, size, options);
+}
+
 TEST(CompareMasks, CountsAndIou) {
   cv::Mat e(10, 10, CV_8UC1, cv::Scalar(0)), a(10, 10, CV_8UC1, cv::Scalar(0));
   e(cv::Rect(0, 0, 4, 5)).setTo(255);  // 20 px
@@ -163,7 +170,7 @@ void checkScene(const std::string& name, const cv::Mat& mask, Summary& summary) 
   for (const auto& [variant, subject] : subjectVariants(mask)) {
     for (const auto& roi : makeRois(size)) {
       for (FillRule rule : kRules) {
-        const MaskCheck check = checkRoiClip(subject, roi.paths, rule, rule, size);
+        const MaskCheck check = clipAndCheck(subject, roi.paths, rule, rule, size);
         summary.add(check);
         EXPECT_TRUE(check.vectorVsRaster.agreesOffBand())
             << name << " " << variant << " roi " << roi.name << " rule " << toString(rule) << ": "
@@ -301,7 +308,7 @@ TEST(SceneImages, ClipMatchesRasterMasksOffBand) {
     for (const Paths& s : {subject, fromContours(approx)}) {
       for (const auto& roi : rois) {
         for (FillRule rule : kRules) {
-          const MaskCheck check = checkRoiClip(s, roi.paths, rule, rule, image.mask.size());
+          const MaskCheck check = clipAndCheck(s, roi.paths, rule, rule, image.mask.size());
           summary.add(check);
           EXPECT_TRUE(check.ok()) << image.name << " roi " << roi.name << " rule " << toString(rule)
                                   << ": " << check.vectorVsRaster << " / OpenCV: "
@@ -388,7 +395,7 @@ TEST(RandomOperands, ClipMatchesRasterMasksOffBandForEveryRulePairAndOperation) 
     options.op = static_cast<ClipOp>(iter % 4);
     for (FillRule subjectRule : kRules) {
       for (FillRule roiRule : kRules) {
-        const MaskCheck check = checkRoiClip(subject, roi, subjectRule, roiRule, size, options);
+        const MaskCheck check = clipAndCheck(subject, roi, subjectRule, roiRule, size, options);
         ++checks;
         clipped += check.vectorVsRaster.both;
         ASSERT_TRUE(check.ok()) << "iteration " << iter << " " << toString(options.op) << " rules "
@@ -464,25 +471,42 @@ TEST(MaskCheck, DetectsAWrongResult) {
   const Paths subject = {{{10, 10}, {110, 10}, {110, 90}, {10, 90}},
                          {{30, 30}, {30, 70}, {80, 70}, {80, 30}}};
   const Paths roi = {{{20.5, 5}, {100, 20}, {95.25, 95}, {5, 80}}};
-  const MaskCheck check = checkRoiClip(subject, roi, FillRule::EvenOdd, FillRule::EvenOdd, size);
-  ASSERT_TRUE(check.ok());
-  ASSERT_EQ(check.clipped.polygons.size(), 1u);
-  ASSERT_EQ(check.clipped.polygons[0].holes.size(), 1u);
+  const PolygonSet clipped =
+      clip(ClipOp::Intersection, subject, roi, FillRule::EvenOdd, FillRule::EvenOdd);
+  ASSERT_TRUE(checkRoiClip(subject, roi, clipped, FillRule::EvenOdd, FillRule::EvenOdd, size).ok());
+  ASSERT_EQ(clipped.polygons.size(), 1u);
+  ASSERT_EQ(clipped.polygons[0].holes.size(), 1u);
   Paths edges = subject;
   edges.insert(edges.end(), roi.begin(), roi.end());
-  const cv::Mat right = rasterize(check.clipped, size);
+  const cv::Mat right = rasterize(clipped, size);
 
-  PolygonSet noHole = check.clipped;
+  PolygonSet noHole = clipped;
   noHole.polygons[0].holes.clear();
   const MaskComparison lost = compareMasks(right, rasterize(noHole, size), kOpenCvBand, edges);
   EXPECT_FALSE(lost.agreesOffBand()) << lost;
   EXPECT_GT(lost.offBandOnlyActual, 1000);
 
-  PolygonSet moved = check.clipped;
+  PolygonSet moved = clipped;
   for (Point& p : moved.polygons[0].outer) p.x += 1.0;
   for (Point& p : moved.polygons[0].holes[0]) p.x += 1.0;
   const MaskComparison shifted = compareMasks(right, rasterize(moved, size), kExactBand, edges);
   EXPECT_FALSE(shifted.agreesOffBand()) << shifted;
+
+  // checkRoiClip() judges the result it is given: each wrong one fails it. The exact route sees
+  // both; the 1 px shift lies inside the cv::fillPoly route's 2 px band, the lost hole does not.
+  for (const PolygonSet* wrong : {&noHole, &moved}) {
+    const MaskCheck check =
+        checkRoiClip(subject, roi, *wrong, FillRule::EvenOdd, FillRule::EvenOdd, size);
+    EXPECT_FALSE(check.ok());
+    EXPECT_FALSE(check.vectorVsRaster.agreesOffBand()) << check.vectorVsRaster;
+    ASSERT_TRUE(check.vectorVsOpenCv.has_value());
+    EXPECT_EQ(check.vectorVsOpenCv->agreesOffBand(), wrong == &moved) << *check.vectorVsOpenCv;
+  }
+  // An empty result for a non-empty clip, and the result of another operation, fail too.
+  EXPECT_FALSE(
+      checkRoiClip(subject, roi, PolygonSet{}, FillRule::EvenOdd, FillRule::EvenOdd, size).ok());
+  const PolygonSet united = clip(ClipOp::Union, subject, roi, FillRule::EvenOdd, FillRule::EvenOdd);
+  EXPECT_FALSE(checkRoiClip(subject, roi, united, FillRule::EvenOdd, FillRule::EvenOdd, size).ok());
 }
 
 }  // namespace

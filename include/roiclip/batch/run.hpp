@@ -2,10 +2,10 @@
 //
 // Output folder layout (every file written atomically: a temporary file in the same folder,
 // then a rename, so an interrupted run never leaves a half-written NAME.* file):
-//   NAME.json          resultToJson() of the image
+//   NAME.json          the image's ImageResult: status, tags, ROI, clipped polygons, figures
 //   NAME.overlay.png   renderOverlay() (only when the pipeline got as far as the ROI)
 //   NAME.mask.png      renderMask() (only with writeMasks)
-//   summary.csv        one row per image (see kSummaryColumns)
+//   summary.csv        one row per image (ImageRecord's fields)
 //   summary.json       the same rows plus run totals
 //   report.html        every overlay with its figures
 // NAME is the image's path relative to the input folder without its extension (with it when
@@ -19,12 +19,9 @@
 #include <string>
 #include <vector>
 
-#include <roiclip/batch/process.hpp>
+#include <roiclip/batch/options.hpp>
 
 namespace roiclip::batch {
-
-/// Image file extensions run() picks up (lower case, compared case-insensitively).
-const std::vector<std::string>& imageExtensions();
 
 /// Options of a run.
 struct BatchOptions {
@@ -56,9 +53,6 @@ struct ImageRecord {
   double seconds = 0;                  ///< processing time (0 when skipped)
 };
 
-/// CSV header of summary.csv.
-extern const char* const kSummaryColumns;
-
 /// Progress, reported after every image (from worker threads, one call at a time).
 struct Progress {
   std::size_t done = 0;  ///< images finished (processed, skipped or failed)
@@ -83,29 +77,10 @@ struct RunSummary {
   }
 };
 
-/// The image files under `input` (sorted by path), recursively when asked.
-/// @throws InvalidInputError if `input` is not a readable folder.
-std::vector<std::filesystem::path> findImages(const std::filesystem::path& input, bool recursive);
-
-/// Output NAME for `relative` (an image path relative to the input folder): the path without
-/// its extension, or with the extension kept (`keepExtension`). Only plain names are allowed:
-/// absolute paths, "..", "." and empty components are rejected, so the result can never point
-/// outside the output folder.
-/// @throws InvalidInputError for such a path.
-std::string outputName(const std::filesystem::path& relative, bool keepExtension = false);
-
-/// Write `bytes` to `file` atomically (temporary file in the same folder, then rename).
-/// @throws Error naming the file if it cannot be written.
-void writeFileAtomic(const std::filesystem::path& file, const std::string& bytes);
-
-/// Remove the hidden temporary files writeFileAtomic() leaves when a process is killed before
-/// its rename (".NAME.tmp.PID.N" anywhere under `output` whose PID no longer runs).
-/// run() calls it first. @return how many were removed.
-std::size_t removeStaleTemporaries(const std::filesystem::path& output);
-
 /// Process every image of options.input into options.output, `jobs` at a time, each worker
 /// holding one image at a time (memory is bounded by jobs x one image). Per-image failures are
-/// recorded and the run carries on. Images whose NAME.json (status ok or no-roi, made with the
+/// recorded and the run carries on. Temporaries of dead runs in options.output are removed first
+/// (io::removeStaleTemporaries). Images whose NAME.json (status ok or no-roi, made with the
 /// same optionsKey()) and NAME.overlay.png (and NAME.mask.png when asked) are newer than the
 /// image are skipped unless options.force; failed and mask-mismatch images are always redone.
 /// When `cancel` becomes true, no new image is started; images in flight finish (their files
@@ -115,13 +90,6 @@ std::size_t removeStaleTemporaries(const std::filesystem::path& output);
 ///         (ROI spec, board file); Error if the output folder cannot be created or written.
 RunSummary run(const BatchOptions& options, const ProgressCallback& progress = {},
                const std::atomic<bool>* cancel = nullptr);
-
-/// summary.csv text for `summary`.
-std::string summaryCsv(const RunSummary& summary);
-/// summary.json text for `summary`.
-std::string summaryJson(const RunSummary& summary, const BatchOptions& options);
-/// report.html text: every overlay (linked relative to the output folder) with its figures.
-std::string reportHtml(const RunSummary& summary, const BatchOptions& options);
 
 /// Turn a JSON config object into command-line arguments: {"jobs": 2, "force": true,
 /// "roi": "hull"} -> ["--jobs", "2", "--force", "--roi", "hull"]. Booleans become a flag when

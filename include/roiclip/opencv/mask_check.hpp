@@ -72,9 +72,8 @@ struct MaskCheckOptions {
   Grid grid{};
 };
 
-/// Everything checkRoiClip() computed.
+/// What checkRoiClip() found.
 struct MaskCheck {
-  PolygonSet clipped;                            ///< clip(Intersection, subject, roi, ...)
   MaskComparison vectorVsRaster;                 ///< (a) vs (b)
   std::optional<MaskComparison> vectorVsOpenCv;  ///< (a) vs (c); only for even-odd/even-odd
   /// True when every comparison made agrees off its band.
@@ -83,17 +82,21 @@ struct MaskCheck {
   }
 };
 
-/// The mask check used by the tests and the batch app. Clips `subject` to `roi` with the core
-/// and compares
-///   (a) rasterize(clip result)
+/// The mask check used by the tests and the batch pipeline: is `result` what the core should
+/// have returned for clip(options.op, subject, roi, subjectRule, roiRule, options.grid)?
+/// It never clips; it compares
+///   (a) rasterize(result)
 ///   (b) rasterize(subject, subjectRule) AND rasterize(roi, roiRule)       band: exactBand
 ///   (c) cv::fillPoly(subject) AND cv::fillPoly(roi), both at kDefaultShift, band: openCvBand;
 ///       only when both rules are FillRule::EvenOdd, the only rule cv::fillPoly implements.
 /// (AND is replaced by OR, AND NOT or XOR when options.op is another operation.)
 /// The band is measured from the edges of subject and roi. Off the band the masks must agree
-/// exactly; any difference there is a bug (in the core or in the rasteriser).
+/// exactly; any difference there is a bug (in the core or in the rasteriser), or `result` is not
+/// the clip of these operands.
+/// @param result the clip result to check (e.g. what the caller got from clip()).
 /// @param size image size in pixels; geometry outside it is ignored by all three masks.
-MaskCheck checkRoiClip(const Paths& subject, const Paths& roi, FillRule subjectRule,
-                       FillRule roiRule, cv::Size size, const MaskCheckOptions& options = {});
+MaskCheck checkRoiClip(const Paths& subject, const Paths& roi, const PolygonSet& result,
+                       FillRule subjectRule, FillRule roiRule, cv::Size size,
+                       const MaskCheckOptions& options = {});
 
 }  // namespace roiclip::opencv

@@ -1,7 +1,9 @@
 // roiclip::opencv: everything where roiclip meets OpenCV (conversions, exact rasteriser, mask
-// checks). Link roiclip::opencv.
+// checks, contour detection, edge tracing). Link roiclip::opencv.
 #pragma once
 
+#include <roiclip/opencv/contours.hpp>
 #include <roiclip/opencv/convert.hpp>
+#include <roiclip/opencv/edges.hpp>
 #include <roiclip/opencv/mask_check.hpp>
 #include <roiclip/opencv/rasterize.hpp>

@@ -1,12 +1,12 @@
 // Open polylines: Canny edges traced into chains (the core's clipLines clips them to the ROI).
+#include <roiclip/opencv/edges.hpp>
+
 #include <array>
 #include <cmath>
 
-#include <opencv2/core.hpp>
+#include <opencv2/imgproc.hpp>
 
-#include <roiclip/batch/process.hpp>
-
-namespace roiclip::batch {
+namespace roiclip::opencv {
 
 namespace {
 
@@ -16,7 +16,8 @@ constexpr std::array<std::array<int, 2>, 8> kSteps = {
 
 }  // namespace
 
-std::vector<Path> traceEdges(const cv::Mat& edges) {
+Paths traceEdges(cv::InputArray input) {
+  const cv::Mat edges = input.getMat();
   if (edges.empty()) return {};
   if (edges.type() != CV_8UC1) throw InvalidInputError("traceEdges: need a CV_8UC1 edge image");
   const int w = edges.cols;
@@ -46,7 +47,7 @@ std::vector<Path> traceEdges(const cv::Mat& edges) {
       if (!moved) return;
     }
   };
-  std::vector<Path> out;
+  Paths out;
   const auto traceFrom = [&](int x, int y) {
     visited.at<uchar>(y, x) = 1;
     Path forward{{x, y}};
@@ -80,7 +81,20 @@ std::vector<Path> traceEdges(const cv::Mat& edges) {
   return out;
 }
 
-double polylineLength(const std::vector<Path>& polylines) {
+void approximatePolylines(Paths& polylines, double epsilon) {
+  for (Path& line : polylines) {
+    // cv::approxPolyDP takes int or float points only; float is exact for the pixel centres
+    // traceEdges() gives (up to 2^24 px).
+    std::vector<cv::Point2f> in;
+    std::vector<cv::Point2f> approx;
+    for (const Point& p : line) in.emplace_back(static_cast<float>(p.x), static_cast<float>(p.y));
+    cv::approxPolyDP(in, approx, epsilon, false);
+    line.clear();
+    for (const auto& p : approx) line.emplace_back(p.x, p.y);
+  }
+}
+
+double polylineLength(const Paths& polylines) {
   double total = 0;
   for (const Path& line : polylines) {
     for (std::size_t i = 1; i < line.size(); ++i) {
@@ -90,4 +104,4 @@ double polylineLength(const std::vector<Path>& polylines) {
   return total;
 }
 
-}  // namespace roiclip::batch
+}  // namespace roiclip::opencv

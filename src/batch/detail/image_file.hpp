@@ -1,5 +1,5 @@
-// roiclip::batch: reading image files safely. A file's header is read first (format and size,
-// without decoding a pixel), so an image that would not fit the pixel limit, a decompression
+// roiclip::batch internal: reading image files safely. A file's header is read first (format and
+// size, without decoding a pixel), so an image that would not fit the pixel limit, a decompression
 // bomb among them, is refused before anything the size of the image is allocated; then the file
 // is decoded with OpenCV and problems come back as exceptions whose message names the file and
 // what is wrong with it.
@@ -11,16 +11,10 @@
 
 #include <opencv2/core.hpp>
 
+#include <roiclip/batch/options.hpp>  // kDefaultMaxPixels
 #include <roiclip/error.hpp>
 
 namespace roiclip::batch {
-
-/// Default pixel limit of one image (width x height): 100 megapixels, e.g. 10000 x 10000. A run
-/// holds about 20 bytes per pixel of an 8-bit gray image in flight (the image, its gray copy,
-/// AprilTag's buffers, the contour and mask-check masks; measured: 2560 x 1920 through the
-/// whole pipeline, 195 MB peak against 103 MB for 640 x 480), so about 2 GB per image at the
-/// limit, times --jobs; more for 16-bit, float or colour images.
-constexpr std::int64_t kDefaultMaxPixels = 100'000'000;
 
 /// readImage() refused an image because it has more pixels than allowed.
 class ImageTooLargeError : public InvalidInputError {

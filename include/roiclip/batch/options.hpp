@@ -1,0 +1,90 @@
+// roiclip::batch options and outcome codes: what `roiclip run` can be told (RunOptions, with the
+// one set of defaults), how each enum is spelled in options and output files (both ways, from
+// one table each), and optionsKey().
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include <roiclip/apriltag/detector.hpp>
+#include <roiclip/opencv/contours.hpp>
+#include <roiclip/roiclip.hpp>
+
+namespace roiclip::batch {
+
+using opencv::ContourMethod;
+using opencv::ContourOptions;
+using opencv::Polarity;
+
+/// Default pixel limit of one image (width x height): 100 megapixels, e.g. 10000 x 10000. A run
+/// holds about 20 bytes per pixel of an 8-bit gray image in flight (the image, its gray copy,
+/// AprilTag's buffers, the contour and mask-check masks; measured: 2560 x 1920 through the
+/// whole pipeline, 195 MB peak against 103 MB for 640 x 480), so about 2 GB per image at the
+/// limit, times --jobs; more for 16-bit, float or colour images.
+constexpr std::int64_t kDefaultMaxPixels = 100'000'000;
+
+/// Everything the per-image pipeline needs. Options are plain values so a config file can hold
+/// them; the member initialisers are the defaults of the library and of `roiclip run`.
+struct RunOptions {
+  apriltag::DetectorOptions detector;
+  /// ROI spec as parsed by apriltag::parseRoiSpec: "hull" (default: convex hull of all detected
+  /// tags), "hull:0,2,5", "tags:0,1,2,3[@anchor]", "board[:name]", "tag:ID:x,y;x,y;...".
+  std::string roi = "hull";
+  /// Board JSON for "board" specs (apriltag::Board::load format).
+  std::string boardFile;
+  ContourOptions contours;
+  FillRule subjectFillRule = FillRule::EvenOdd;  ///< for the contours (as cv::fillPoly draws)
+  FillRule roiFillRule = FillRule::EvenOdd;      ///< for the ROI paths
+  Grid grid{};
+  /// Images with more pixels (width x height) are refused (FailureKind::TooLarge); run() checks
+  /// the file's header before decoding. <= 0: no limit. Not part of optionsKey(): it guards
+  /// decoding and changes no result, so up-to-date outputs stay up to date.
+  std::int64_t maxPixels = kDefaultMaxPixels;
+};
+
+/// Every option that changes the pipeline's result, as one line of text. A run stores it in
+/// NAME.json and only skips an image when it matches, so changing an option reprocesses.
+std::string optionsKey(const RunOptions& options);
+
+/// Parse "otsu", "adaptive", "canny" or "threshold:T" (T in 0..255) into options.method (and
+/// options.threshold). @throws InvalidInputError quoting the text.
+void parseContourMethod(const std::string& text, ContourOptions& options);
+/// "otsu", "adaptive", "canny", "threshold" (without the threshold value).
+const char* toString(ContourMethod method);
+/// Parse "dark" or "light". @throws InvalidInputError quoting the text.
+Polarity parsePolarity(const std::string& text);
+/// "dark", "light".
+const char* toString(Polarity polarity);
+
+/// Outcome of one image.
+enum class Status {
+  Ok,            ///< processed and the mask check agrees off its band
+  NoRoi,         ///< the ROI could not be built (no tags, a required id missing or duplicated)
+  Failed,        ///< unreadable or unsupported image, bad options, or an error while processing
+  MaskMismatch,  ///< processed, but the vector result and the raster route disagree off the band
+};
+/// "ok", "no-roi", "failed", "mask-mismatch".
+const char* toString(Status status);
+/// The inverse of toString(Status); nothing for any other text.
+std::optional<Status> parseStatus(std::string_view text);
+
+/// Why an image did not reach Status::Ok.
+enum class FailureKind {
+  None,
+  Unreadable,  ///< missing, empty, not an image, truncated or corrupt file
+  TooLarge,    ///< more pixels than RunOptions::maxPixels (refused before decoding)
+  NoTags,
+  MissingTags,
+  InvalidInput,  ///< an image type the pipeline cannot use, bad options, out-of-range input
+  Internal,
+  Mismatch,
+};
+/// "none", "unreadable", "too-large", "no-tags", "missing-tags", "invalid-input", "internal",
+/// "mismatch".
+const char* toString(FailureKind kind);
+/// The inverse of toString(FailureKind); nothing for any other text.
+std::optional<FailureKind> parseFailureKind(std::string_view text);
+
+}  // namespace roiclip::batch

@@ -1,0 +1,23 @@
+// roiclip::batch internal: the per-image pipeline with its core calls counted (for the tests
+// that pin down how often one image runs the core).
+#pragma once
+
+#include <opencv2/core.hpp>
+
+#include <roiclip/batch/process.hpp>
+
+namespace roiclip::batch::detail {
+
+/// How often one image called each core function.
+struct CoreCalls {
+  int simplify = 0;
+  int clip = 0;
+  int clipLines = 0;
+  [[nodiscard]] int total() const { return simplify + clip + clipLines; }
+};
+
+/// Processor(options).process(image), also counting the core calls into `calls`.
+ImageResult processCountingCoreCalls(const cv::Mat& image, const RunOptions& options,
+                                     CoreCalls& calls);
+
+}  // namespace roiclip::batch::detail

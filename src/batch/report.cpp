@@ -1,0 +1,175 @@
+// The run's summary files: summary.csv, summary.json and report.html.
+#include "detail/report.hpp"
+
+#include <cctype>
+#include <iomanip>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+namespace roiclip::batch::detail {
+
+namespace {
+
+using Json = nlohmann::json;
+
+std::string csvField(const std::string& s) {
+  if (s.find_first_of(",\"\n\r") == std::string::npos) return s;
+  std::string out = "\"";
+  for (char c : s) {
+    if (c == '"') out += '"';
+    out += (c == '\n' || c == '\r') ? ' ' : c;
+  }
+  return out + "\"";
+}
+
+std::string htmlEscape(const std::string& s) {
+  std::string out;
+  for (char c : s) {
+    switch (c) {
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      case '\'':
+        out += "&#39;";
+        break;
+      default:
+        out += c;
+    }
+  }
+  return out;
+}
+
+// Percent-encode everything but unreserved characters and '/', for relative URLs.
+std::string urlEncode(const std::string& s) {
+  std::ostringstream os;
+  for (unsigned char c : s) {
+    if (std::isalnum(c) || c == '-' || c == '_' || c == '.' || c == '~' || c == '/') {
+      os << c;
+    } else {
+      os << '%' << std::uppercase << std::hex << std::setw(2) << std::setfill('0')
+         << static_cast<int>(c) << std::dec;
+    }
+  }
+  return os.str();
+}
+
+std::string fmt(double v, int precision) {
+  std::ostringstream os;
+  os << std::fixed << std::setprecision(precision) << v;
+  return os.str();
+}
+
+}  // namespace
+
+const char* const kSummaryColumns =
+    "image,status,failure,reason,skipped,width,height,tags_found,roi_area,contours_in,"
+    "contours_out,clipped_area,iou,off_band_mismatches,seconds";
+
+std::string summaryCsv(const RunSummary& summary) {
+  std::ostringstream os;
+  os << kSummaryColumns << "\n";
+  for (const auto& r : summary.images) {
+    os << csvField(r.image) << ',' << toString(r.status) << ',' << toString(r.failure) << ','
+       << csvField(r.reason) << ',' << (r.skipped ? 1 : 0) << ',' << r.width << ',' << r.height
+       << ',' << r.tagsFound << ',' << fmt(r.roiArea, 3) << ',' << r.contoursIn << ','
+       << r.contoursOut << ',' << fmt(r.clippedArea, 3) << ',' << fmt(r.iou, 6) << ','
+       << r.offBandMismatches << ',' << fmt(r.seconds, 4) << "\n";
+  }
+  return os.str();
+}
+
+std::string summaryJson(const RunSummary& summary, const BatchOptions& options) {
+  Json rows = Json::array();
+  for (const auto& r : summary.images) {
+    rows.push_back({{"image", r.image},
+                    {"name", r.name},
+                    {"status", toString(r.status)},
+                    {"failure", toString(r.failure)},
+                    {"reason", r.reason},
+                    {"skipped", r.skipped},
+                    {"width", r.width},
+                    {"height", r.height},
+                    {"tags_found", r.tagsFound},
+                    {"roi_area", r.roiArea},
+                    {"contours_in", r.contoursIn},
+                    {"contours_out", r.contoursOut},
+                    {"clipped_area", r.clippedArea},
+                    {"iou", r.iou},
+                    {"off_band_mismatches", r.offBandMismatches},
+                    {"seconds", r.seconds}});
+  }
+  const RunOptions& p = options.process;
+  Json j = {{"input", options.input.string()},
+            {"output", options.output.string()},
+            {"options",
+             {{"roi", p.roi},
+              {"board", p.boardFile},
+              {"family", p.detector.family},
+              {"method", toString(p.contours.method)},
+              {"polarity", toString(p.contours.polarity)},
+              {"approx_epsilon", p.contours.approxEpsilon},
+              {"min_area", p.contours.minArea},
+              {"fill_rule", toString(p.subjectFillRule)},
+              {"roi_fill_rule", toString(p.roiFillRule)}}},
+            {"total", summary.total},
+            {"processed", summary.images.size()},
+            {"ok", summary.ok},
+            {"no_roi", summary.noRoi},
+            {"failed", summary.failed},
+            {"mask_mismatch", summary.mismatched},
+            {"skipped", summary.skipped},
+            {"interrupted", summary.interrupted},
+            {"seconds", summary.seconds},
+            {"images", std::move(rows)}};
+  return j.dump(1) + "\n";
+}
+
+std::string reportHtml(const RunSummary& summary, const BatchOptions& options) {
+  std::ostringstream os;
+  os << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">"
+     << "<title>roiclip run: " << htmlEscape(options.input.string()) << "</title>\n"
+     << "<style>body{font-family:sans-serif;margin:1em;background:#f4f4f4}"
+     << "figure{display:inline-block;vertical-align:top;margin:.5em;padding:.5em;"
+     << "background:#fff;max-width:48%}figure img{max-width:100%}"
+     << "table{border-collapse:collapse;font-size:90%}td,th{padding:.1em .5em;text-align:right}"
+     << ".bad{color:#b00}</style></head><body>\n"
+     << "<h1>roiclip run</h1>\n<p>Input <code>" << htmlEscape(options.input.string())
+     << "</code>, ROI <code>" << htmlEscape(options.process.roi) << "</code>, contours <code>"
+     << toString(options.process.contours.method) << "</code>, fill rule <code>"
+     << toString(options.process.subjectFillRule) << "</code>. " << summary.images.size() << " of "
+     << summary.total << " images: " << summary.ok << " ok, " << summary.noRoi << " no-roi, "
+     << summary.failed << " failed, " << summary.mismatched << " mask-mismatch"
+     << (summary.interrupted ? " (interrupted)" : "") << ".</p>\n";
+  for (const auto& r : summary.images) {
+    const bool ok = r.status == Status::Ok;
+    os << "<figure>";
+    if (r.status != Status::Failed || r.width > 0) {
+      os << "<a href=\"" << urlEncode(r.name) << ".overlay.png\"><img loading=\"lazy\" src=\""
+         << urlEncode(r.name) << ".overlay.png\" alt=\"" << htmlEscape(r.image) << "\"></a>";
+    }
+    os << "<figcaption><b>" << htmlEscape(r.image) << "</b> <span" << (ok ? "" : " class=\"bad\"")
+       << ">" << toString(r.status) << "</span>";
+    if (!r.reason.empty()) os << ": " << htmlEscape(r.reason);
+    os << "<table><tr><th>tags</th><th>ROI px&sup2;</th><th>contours in/out</th>"
+       << "<th>clipped px&sup2;</th><th>IoU</th><th>off-band</th><th>s</th></tr><tr><td>"
+       << r.tagsFound << "</td><td>" << fmt(r.roiArea, 1) << "</td><td>" << r.contoursIn << "/"
+       << r.contoursOut << "</td><td>" << fmt(r.clippedArea, 1) << "</td><td>" << fmt(r.iou, 4)
+       << "</td><td>" << r.offBandMismatches << "</td><td>"
+       << (r.skipped ? std::string("skipped") : fmt(r.seconds, 3)) << "</td></tr></table>"
+       << "<a href=\"" << urlEncode(r.name) << ".json\">JSON</a></figcaption></figure>\n";
+  }
+  os << "</body></html>\n";
+  return os.str();
+}
+
+}  // namespace roiclip::batch::detail
