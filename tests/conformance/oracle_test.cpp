@@ -4,9 +4,9 @@
 
 #include <gtest/gtest.h>
 
-#include "oracle.hpp"
+#include "support/oracle.hpp"
 
-namespace roiclip::conformance {
+namespace roiclip::testing {
 namespace {
 
 TEST(Oracle, OrientationIsExactWhereDoublesRoundToZero) {
@@ -48,4 +48,4 @@ TEST(Oracle, ProximityFindsOnlyNearbyEdges) {
 }
 
 }  // namespace
-}  // namespace roiclip::conformance
+}  // namespace roiclip::testing

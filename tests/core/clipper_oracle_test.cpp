@@ -3,81 +3,20 @@
 // the error Clipper makes by rounding crossing points to its integer grid.
 #include <gtest/gtest.h>
 
-#include <clipper.hpp>
 #include <cmath>
 #include <cstdio>
 
 #include <roiclip/roiclip.hpp>
 
-#include "oracle.hpp"
+#include "support/clipper1.hpp"
+#include "support/oracle.hpp"
 
 namespace roiclip {
 namespace {
 
-constexpr double kUnits = 256.0;  // Clipper works on the same 1/256 px grid as roiclip
-
-ClipperLib::Paths toClipper(const Paths& paths) {
-  ClipperLib::Paths out;
-  for (const Path& p : paths) {
-    ClipperLib::Path q;
-    for (const Point& v : p) {
-      q.emplace_back(ClipperLib::cInt(std::llround(v.x * kUnits)),
-                     ClipperLib::cInt(std::llround(v.y * kUnits)));
-    }
-    out.push_back(q);
-  }
-  return out;
-}
-
-ClipperLib::PolyFillType toClipper(FillRule r) {
-  switch (r) {
-    case FillRule::EvenOdd:
-      return ClipperLib::pftEvenOdd;
-    case FillRule::NonZero:
-      return ClipperLib::pftNonZero;
-    case FillRule::Positive:
-      return ClipperLib::pftPositive;
-    case FillRule::Negative:
-      return ClipperLib::pftNegative;
-  }
-  return ClipperLib::pftEvenOdd;
-}
-
-ClipperLib::ClipType toClipper(ClipOp op) {
-  switch (op) {
-    case ClipOp::Intersection:
-      return ClipperLib::ctIntersection;
-    case ClipOp::Union:
-      return ClipperLib::ctUnion;
-    case ClipOp::Difference:
-      return ClipperLib::ctDifference;
-    case ClipOp::Xor:
-      return ClipperLib::ctXor;
-  }
-  return ClipperLib::ctIntersection;
-}
-
-struct AreaAndPerimeter {
-  double area = 0;
-  double perimeter = 0;
-};
-
-AreaAndPerimeter measure(const ClipperLib::Paths& paths) {
-  AreaAndPerimeter m;
-  for (const auto& p : paths) {
-    m.area += ClipperLib::Area(p) / (kUnits * kUnits);
-    for (std::size_t i = 0; i < p.size(); ++i) {
-      const auto& a = p[i];
-      const auto& b = p[(i + 1) % p.size()];
-      m.perimeter += std::hypot(double(b.X - a.X), double(b.Y - a.Y)) / kUnits;
-    }
-  }
-  return m;
-}
-
-// Clipper moves each crossing point by at most half a unit diagonally; the area changes by at
-// most that displacement times the perimeter of its output.
-double roundingTolerance(const AreaAndPerimeter& m) { return m.perimeter * 0.71 / kUnits + 1e-9; }
+using testing::measure;
+using testing::roundingTolerance;
+using testing::toClipper;
 
 constexpr FillRule kRules[] = {FillRule::EvenOdd, FillRule::NonZero, FillRule::Positive,
                                FillRule::Negative};
@@ -99,7 +38,7 @@ TEST(ClipperOracle, SimplifyAreasAgree) {
     for (FillRule rule : kRules) {
       ClipperLib::Paths solution;
       ClipperLib::SimplifyPolygons(toClipper(input), solution, toClipper(rule));
-      const AreaAndPerimeter expected = measure(solution);
+      const testing::ClipperMeasure expected = measure(solution);
       const double ours = simplify(input, rule).area();
       if (std::fabs(ours - std::fabs(expected.area)) > roundingTolerance(expected)) {
         // Disagreement: the slab integration of the exact winding numbers decides.
@@ -144,7 +83,7 @@ TEST(ClipperOracle, ClipAreasAgree) {
           c.AddPaths(toClipper(b), ClipperLib::ptClip, true);
           ClipperLib::Paths solution;
           ASSERT_TRUE(c.Execute(toClipper(op), solution, toClipper(ra), toClipper(rb)));
-          const AreaAndPerimeter expected = measure(solution);
+          const testing::ClipperMeasure expected = measure(solution);
           const double ours = clip(op, a, b, ra, rb).area();
           if (std::fabs(ours - expected.area) > roundingTolerance(expected)) {
             const double truth = testing::slabArea({&a, &b}, [&](const std::vector<long long>& w) {
@@ -204,7 +143,7 @@ TEST(ClipperOracle, LargePixelContourAgainstQuad) {
   ClipperLib::Paths solution;
   ASSERT_TRUE(c.Execute(ClipperLib::ctIntersection, solution, ClipperLib::pftEvenOdd,
                         ClipperLib::pftEvenOdd));
-  const AreaAndPerimeter expected = measure(solution);
+  const testing::ClipperMeasure expected = measure(solution);
   const PolygonSet convexPath = intersect(subject, quad);
   EXPECT_NEAR(convexPath.area(), expected.area, roundingTolerance(expected));
   // Union and difference take the general path; |A| = |A - Q| + |A n Q| ties them together.

@@ -7,7 +7,7 @@
 
 #include <roiclip/roiclip.hpp>
 
-#include "oracle.hpp"
+#include "support/oracle.hpp"
 #include "pipeline.hpp"
 
 namespace roiclip {

@@ -1,7 +1,7 @@
 // The core at its limits, scaled down to keep the suite fast (bench/limits runs the full sizes
 // with time and memory figures): degenerate and invalid operands of clip() (simplify()'s are in
 // simplify_test.cpp), deep nesting through clip, long pixel contours and many crossings, each
-// against areas known in closed form (limit_shapes.hpp) or the slab integration (oracle.hpp).
+// against areas known in closed form (limit_shapes.hpp) or the slab integration (support/oracle.hpp).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -10,7 +10,7 @@
 #include <roiclip/roiclip.hpp>
 
 #include "limit_shapes.hpp"
-#include "oracle.hpp"
+#include "support/oracle.hpp"
 
 namespace roiclip {
 namespace {

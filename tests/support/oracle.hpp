@@ -1,29 +1,44 @@
-// Independent oracles for core tests: exact winding numbers of the input at sample points,
-// point-in-result of the output, and structural checks of output rings. Nothing here uses the
-// library's own predicates or pipeline.
+// The one test oracle of roiclip (tests/core, tests/conformance, tests/fuzz): exact winding
+// numbers of any double input at sample points, point-in-result of the output, area by vertical
+// slabs, and structural checks of output rings. Nothing here uses the library's own snapping,
+// predicates or pipeline, so it can judge roiclip's results and other engines' expectations.
 #pragma once
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
-#include <cstdlib>
-#include <fstream>
 #include <optional>
 #include <random>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
+
+#include <glm/common.hpp>
 
 #include <roiclip/roiclip.hpp>
 
 namespace roiclip::testing {
 
-/// Sample points and test inputs live on dyadic grids: inputs on multiples of 1/256 px,
-/// sample points on multiples of 1/4096 px. Scaling both by 4096 makes every coordinate an
-/// integer, so winding numbers and "on an edge" tests are exact.
+/// Sample points of the tests live on multiples of 1/4096 px and their inputs on multiples of
+/// 1/256 px: scaled by kOracleScale every coordinate is an integer, and orientation() takes an
+/// exact 128-bit shortcut. Any other double is handled exactly too, only more slowly.
 constexpr double kOracleScale = 4096.0;
 
-inline std::int64_t toOracle(double v) { return std::llround(v * kOracleScale); }
+/// Exact sign of the orientation of (a, b, p): +1 when p is left of a->b in (x, y) maths axes,
+/// 0 when collinear. Exact for any finite doubles: integers on the 1/4096 px grid in 128 bits,
+/// otherwise a floating-point filter (Shewchuk's bound for orient2d), then exact rationals
+/// (every double is a dyadic rational).
+int orientation(Point a, Point b, Point p);
+
+/// Exact winding number of a closed ring, or of all rings together, around p; p must not lie on
+/// a ring (callers keep sample points away from every edge, or use exactWinding()).
+long long windingNumber(const Path& ring, Point p);
+long long windingNumber(const Paths& rings, Point p);
+
+/// Exact winding number of `paths` around `p`, or nothing when p lies on an edge.
+std::optional<long long> exactWinding(const Paths& paths, Point p);
 
 /// The boolean operation on two memberships, written out here so that the oracle does not
 /// share code with the library.
@@ -39,30 +54,6 @@ inline bool combine(ClipOp op, bool s, bool c) {
       return s != c;
   }
   return false;
-}
-
-/// Exact winding number of `paths` around `p`, or nothing when p lies on an edge.
-inline std::optional<long long> exactWinding(const Paths& paths, Point p) {
-  const std::int64_t px = toOracle(p.x), py = toOracle(p.y);
-  long long w = 0;
-  for (const Path& path : paths) {
-    const std::size_t n = path.size();
-    for (std::size_t i = 0; i < n; ++i) {
-      const std::int64_t ax = toOracle(path[i].x), ay = toOracle(path[i].y);
-      const std::int64_t bx = toOracle(path[(i + 1) % n].x), by = toOracle(path[(i + 1) % n].y);
-      const __int128 cr = __int128(bx - ax) * (py - ay) - __int128(by - ay) * (px - ax);
-      if (cr == 0 && std::min(ax, bx) <= px && px <= std::max(ax, bx) && std::min(ay, by) <= py &&
-          py <= std::max(ay, by)) {
-        return std::nullopt;  // on the boundary
-      }
-      if (ay <= py) {
-        if (by > py && cr > 0) ++w;
-      } else if (by <= py && cr < 0) {
-        --w;
-      }
-    }
-  }
-  return w;
 }
 
 /// Winding number of one ring around p in floating point (for output rings).
@@ -81,23 +72,50 @@ inline int ringWinding(const Path& ring, Point p) {
   return w;
 }
 
-/// Distance from p to the nearest edge of any path.
+/// Euclidean distance from p to segment ab (approximate: only used to keep samples away from
+/// edges by a margin much larger than its rounding error).
+inline double distanceToSegment(Point p, Point a, Point b) {
+  const Point ab = b - a;
+  const double len2 = ab.x * ab.x + ab.y * ab.y;
+  double t = len2 > 0 ? ((p.x - a.x) * ab.x + (p.y - a.y) * ab.y) / len2 : 0.0;
+  t = std::clamp(t, 0.0, 1.0);
+  const Point q = a + t * ab;
+  return std::hypot(p.x - q.x, p.y - q.y);
+}
+
+/// Distance from p to the nearest edge of any path (closed rings).
 inline double distanceToEdges(const Paths& paths, Point p) {
   double best = INFINITY;
   for (const Path& path : paths) {
     const std::size_t n = path.size();
     for (std::size_t i = 0; i < n; ++i) {
-      const Point a = path[i], b = path[(i + 1) % n];
-      const Point d = b - a;
-      const double len2 = d.x * d.x + d.y * d.y;
-      double t = len2 > 0 ? ((p.x - a.x) * d.x + (p.y - a.y) * d.y) / len2 : 0.0;
-      t = std::max(0.0, std::min(1.0, t));
-      const Point q = a + t * d - p;
-      best = std::min(best, std::sqrt(q.x * q.x + q.y * q.y));
+      best = std::min(best, distanceToSegment(p, path[i], path[(i + 1) % n]));
     }
   }
   return best;
 }
+
+/// The edges of closed rings in a bucket grid, to find quickly whether a point is within
+/// `margin` of any of them (large inputs, where distanceToEdges() would be quadratic).
+class SegmentProximity {
+ public:
+  SegmentProximity(const Paths& rings, double margin);
+
+  /// True when p is within the margin of some segment.
+  [[nodiscard]] bool near(Point p) const;
+
+ private:
+  struct Segment {
+    Point a, b;
+  };
+  [[nodiscard]] std::pair<std::size_t, std::size_t> cell(Point p) const;
+
+  double margin_;
+  std::vector<Segment> segments_;
+  Point lo_{0}, hi_{0};
+  std::size_t cells_ = 1;
+  std::vector<std::vector<std::size_t>> buckets_;
+};
 
 /// Structural problems of a result, empty when there are none: ring sizes, orientations,
 /// repeated vertices, crossing edges, parent links.
@@ -354,21 +372,11 @@ inline std::string describe(const Paths& paths) {
 /// Writes a case as a fixture file in the format tests/core/fixture_test.cpp replays:
 /// {"note": ..., "subject": paths, "clip": paths (optional), "op": ..., "subjectFillRule": ...,
 ///  "clipFillRule": ...}.
-inline void saveFixture(const std::string& file, const std::string& note, const Paths& subject,
-                        const Paths* clipPaths, const char* op, FillRule subjectRule,
-                        FillRule clipRule) {
-  std::ofstream f(file);
-  f << "{\"note\": \"" << note << "\",\n \"subject\": " << describe(subject);
-  if (clipPaths != nullptr) f << ",\n \"clip\": " << describe(*clipPaths);
-  f << ",\n \"op\": \"" << op << "\", \"subjectFillRule\": \"" << toString(subjectRule)
-    << "\", \"clipFillRule\": \"" << toString(clipRule) << "\"}\n";
-}
+void saveFixture(const std::string& file, const std::string& note, const Paths& subject,
+                 const Paths* clipPaths, const char* op, FillRule subjectRule, FillRule clipRule);
 
 /// Folder for new failure fixtures: $ROICLIP_FIXTURE_OUT if set, else tests/data/core.
-inline std::string fixtureDir() {
-  const char* env = std::getenv("ROICLIP_FIXTURE_OUT");
-  return env != nullptr ? std::string(env) : std::string(ROICLIP_TEST_DATA) + "/core";
-}
+std::string fixtureDir();
 
 /// Length of open polylines.
 inline double length(const Path& line) {
