@@ -32,7 +32,7 @@ Paths randomSet(std::mt19937& rng, int kind) {
 
 TEST(ClipperOracle, SimplifyAreasAgree) {
   std::mt19937 rng(2024);
-  int compared = 0, agreed = 0, clipperWrong = 0;
+  int compared = 0, agreed = 0, clipperWrong = 0, nonEmpty = 0;
   for (int iter = 0; iter < 300; ++iter) {
     const Paths input = randomSet(rng, iter % 3);
     for (FillRule rule : kRules) {
@@ -40,6 +40,7 @@ TEST(ClipperOracle, SimplifyAreasAgree) {
       ClipperLib::SimplifyPolygons(toClipper(input), solution, toClipper(rule));
       const testing::ClipperMeasure expected = measure(solution);
       const double ours = simplify(input, rule).area();
+      if (ours > 0) ++nonEmpty;
       if (std::fabs(ours - std::fabs(expected.area)) > roundingTolerance(expected)) {
         // Disagreement: the slab integration of the exact winding numbers decides.
         const double truth = testing::slabArea(
@@ -60,7 +61,8 @@ TEST(ClipperOracle, SimplifyAreasAgree) {
       ++compared;
     }
   }
-  EXPECT_EQ(compared, 1200);
+  // Most cases must have a filled region to compare (1171 of 1200 at this seed).
+  EXPECT_GT(nonEmpty, compared * 3 / 4);
   // Clipper 1 is the oracle for the bulk of cases; it must not disagree more than rarely.
   EXPECT_GT(agreed, compared * 9 / 10);
   std::printf(
@@ -71,7 +73,7 @@ TEST(ClipperOracle, SimplifyAreasAgree) {
 
 TEST(ClipperOracle, ClipAreasAgree) {
   std::mt19937 rng(4048);
-  int compared = 0, agreed = 0, clipperWrong = 0;
+  int compared = 0, agreed = 0, clipperWrong = 0, nonEmpty = 0;
   for (int iter = 0; iter < 150; ++iter) {
     const Paths a = randomSet(rng, iter % 3);
     const Paths b = randomSet(rng, (iter / 3) % 3);
@@ -85,6 +87,7 @@ TEST(ClipperOracle, ClipAreasAgree) {
           ASSERT_TRUE(c.Execute(toClipper(op), solution, toClipper(ra), toClipper(rb)));
           const testing::ClipperMeasure expected = measure(solution);
           const double ours = clip(op, a, b, ra, rb).area();
+          if (ours > 0) ++nonEmpty;
           if (std::fabs(ours - expected.area) > roundingTolerance(expected)) {
             const double truth = testing::slabArea({&a, &b}, [&](const std::vector<long long>& w) {
               return testing::combine(op, isFilled(ra, w[0]), isFilled(rb, w[1]));
@@ -108,7 +111,8 @@ TEST(ClipperOracle, ClipAreasAgree) {
       }
     }
   }
-  EXPECT_EQ(compared, 150 * 64);
+  // Most cases must have a filled result to compare (8255 of 9600 at this seed).
+  EXPECT_GT(nonEmpty, compared * 3 / 4);
   EXPECT_GT(agreed, compared * 9 / 10);
   std::printf(
       "clip: %d cases, %d agree with Clipper 1, %d where Clipper 1 is wrong "

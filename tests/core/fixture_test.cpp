@@ -11,6 +11,7 @@
 
 #include <roiclip/roiclip.hpp>
 
+#include "json_paths.hpp"
 #include "support/oracle.hpp"
 
 namespace roiclip {
@@ -31,15 +32,7 @@ std::vector<std::string> fixtureFiles() {
   return files;
 }
 
-Paths readPaths(const nlohmann::json& j) {
-  Paths out;
-  for (const auto& ring : j) {
-    Path p;
-    for (const auto& v : ring) p.emplace_back(v.at(0).get<double>(), v.at(1).get<double>());
-    out.push_back(std::move(p));
-  }
-  return out;
-}
+using testing::readPaths;
 
 class Fixture : public ::testing::TestWithParam<std::string> {};
 

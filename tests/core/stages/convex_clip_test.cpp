@@ -1,14 +1,16 @@
-// The convex fast path (exact Sutherland-Hodgman pre-clip, then resolve) gives the same region
-// as the general path, for random self-intersecting subjects and random convex clips, under
-// every pair of fill rules.
+// The convex pre-clip (src/core/convex_clip.cpp): which rings count as convex, the exact
+// Sutherland-Hodgman step on its own (rings inside pass untouched, rings outside vanish, winding
+// numbers inside are kept), and the fast path giving the same region as the general path for
+// random self-intersecting subjects and random convex clips, under every pair of fill rules.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include <roiclip/roiclip.hpp>
 
-#include "support/oracle.hpp"
 #include "pipeline.hpp"
+#include "stage_support.hpp"
+#include "support/oracle.hpp"
 
 namespace roiclip {
 namespace {
@@ -25,6 +27,51 @@ TEST(ConvexOrientation, RecognisesConvexRingsWindingOnce) {
   EXPECT_EQ(detail::convexOrientation({{0, 0}, {10, 0}, {5, 2}, {10, 10}, {0, 10}}), 0);
   EXPECT_EQ(detail::convexOrientation({{0, 0}, {10, 0}, {5, 0}}), 0);  // reversal
   EXPECT_EQ(detail::convexOrientation({{0, 0}, {10, 0}}), 0);
+}
+
+// The pre-clipped edges of `rings` resolved alone (stages 1 to 4), as the fast path does.
+PolygonSet resolvePreclipped(const std::vector<detail::ExactEdge>& edges, FillRule rule) {
+  const detail::Arrangement a = detail::splitEdges({}, edges, stages::simplifyWith(rule));
+  return detail::buildNesting(a, detail::traceContours(a), stages::kUnitGrid);
+}
+
+const std::vector<IPoint> kConvex = {{0, 0}, {10, 0}, {10, 10}, {0, 10}};
+
+TEST(ConvexPreclip, RingsInsidePassUntouchedAndRingsOutsideVanish) {
+  std::vector<detail::ExactEdge> out;
+  detail::preclipConvex({{{2, 2}, {8, 2}, {8, 8}, {2, 8}}}, kConvex, out);
+  ASSERT_EQ(out.size(), 4u);
+  for (const detail::ExactEdge& e : out) {
+    EXPECT_EQ(e.left.w, 1);
+    EXPECT_EQ(e.right.w, 1);
+    EXPECT_TRUE(e.left.x == 2 || e.left.x == 8);
+    EXPECT_TRUE(e.right.y == 2 || e.right.y == 8);
+    EXPECT_EQ(e.operand, 0);
+  }
+  detail::preclipConvex({{{20, 0}, {30, 0}, {30, 10}, {20, 10}}}, kConvex, out);
+  EXPECT_TRUE(out.empty());
+}
+
+TEST(ConvexPreclip, KeepsWindingNumbersInsideAndNothingOutside) {
+  std::vector<detail::ExactEdge> out;
+  // A square half over the ring's right side: everything left lies inside the ring.
+  detail::preclipConvex({{{5, 5}, {15, 5}, {15, 15}, {5, 15}}}, kConvex, out);
+  ASSERT_FALSE(out.empty());
+  for (const detail::ExactEdge& e : out) {
+    for (std::size_t i = 0; i < kConvex.size(); ++i) {
+      const IPoint a = kConvex[i], b = kConvex[(i + 1) % kConvex.size()];
+      EXPECT_GE(detail::orient(a, b, e.left), 0);
+      EXPECT_GE(detail::orient(a, b, e.right), 0);
+    }
+  }
+  EXPECT_EQ(resolvePreclipped(out, FillRule::NonZero).area(), 25.0);
+  // A bow-tie over the ring's right half: its left lobe winds +1, the right one -1; the pre-clip
+  // keeps the right lobe with its sign, so Negative keeps it and Positive nothing.
+  const std::vector<IPoint> rightHalf = {{5, 0}, {10, 0}, {10, 10}, {5, 10}};
+  detail::preclipConvex({{{0, 0}, {10, 10}, {10, 0}, {0, 10}}}, rightHalf, out);
+  EXPECT_EQ(resolvePreclipped(out, FillRule::NonZero).area(), 25.0);
+  EXPECT_EQ(resolvePreclipped(out, FillRule::Negative).area(), 25.0);
+  EXPECT_TRUE(resolvePreclipped(out, FillRule::Positive).empty());
 }
 
 // A random convex polygon with sub-pixel corners (multiples of 1/256): sorted random angles.
