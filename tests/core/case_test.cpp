@@ -17,8 +17,6 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <cctype>
-#include <filesystem>
 #include <fstream>
 #include <string>
 #include <vector>
@@ -27,24 +25,13 @@
 
 #include <roiclip/roiclip.hpp>
 
-#include "json_paths.hpp"
+#include "data_files.hpp"
 #include "support/oracle.hpp"
 
 namespace roiclip {
 namespace {
 
-namespace fs = std::filesystem;
-
-std::vector<std::string> caseFiles() {
-  std::vector<std::string> files;
-  const fs::path dir = fs::path(ROICLIP_TEST_DATA) / "core" / "cases";
-  if (!fs::exists(dir)) return files;
-  for (const auto& entry : fs::directory_iterator(dir)) {
-    if (entry.path().extension() == ".json") files.push_back(entry.path().string());
-  }
-  std::sort(files.begin(), files.end());
-  return files;
-}
+std::vector<std::string> caseFiles() { return testing::jsonFiles({"core/cases"}); }
 
 bool covers(const PolygonSet& r, Point p) {
   int w = 0;
@@ -136,11 +123,7 @@ TEST_P(Case, MatchesHandWorkedAnswer) {
 
 INSTANTIATE_TEST_SUITE_P(HandWorked, Case, ::testing::ValuesIn(caseFiles()),
                          [](const ::testing::TestParamInfo<std::string>& param) {
-                           std::string name = fs::path(param.param).stem().string();
-                           for (char& c : name) {
-                             if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
-                           }
-                           return name;
+                           return testing::testNameOf(param.param);
                          });
 
 TEST(Case, FolderHoldsEveryHandWorkedCase) { EXPECT_GE(caseFiles().size(), 24u); }
