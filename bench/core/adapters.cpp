@@ -5,44 +5,7 @@
 #include <cstdio>
 #include <stdexcept>
 
-#include "workloads.hpp"
-
 namespace roiclip::bench {
-
-ClipperLib::Paths toClipper(const Paths& paths) {
-  ClipperLib::Paths out;
-  out.reserve(paths.size());
-  for (const Path& path : paths) {
-    ClipperLib::Path ring;
-    ring.reserve(path.size());
-    for (const Point& p : path) {
-      ring.emplace_back(ClipperLib::cInt(std::nearbyint(p.x * kGridScale)),
-                        ClipperLib::cInt(std::nearbyint(p.y * kGridScale)));
-    }
-    out.push_back(std::move(ring));
-  }
-  return out;
-}
-
-ClipperLib::PolyFillType toClipperFill(FillRule rule) {
-  switch (rule) {
-    case FillRule::EvenOdd:
-      return ClipperLib::pftEvenOdd;
-    case FillRule::NonZero:
-      return ClipperLib::pftNonZero;
-    case FillRule::Positive:
-      return ClipperLib::pftPositive;
-    case FillRule::Negative:
-      return ClipperLib::pftNegative;
-  }
-  return ClipperLib::pftEvenOdd;
-}
-
-double clipperArea(const ClipperLib::Paths& paths) {
-  double units = 0.0;
-  for (const ClipperLib::Path& ring : paths) units += ClipperLib::Area(ring);
-  return std::fabs(units) / (kGridScale * kGridScale);
-}
 
 BoostPolygon toBoost(const Paths& paths) {
   BoostPolygon polygon;

@@ -1,6 +1,7 @@
 // Conversions between roiclip paths and the native types of the libraries it is compared with:
-// Clipper 1 (integer units, scaled exactly like roiclip's default grid), Boost.Geometry and the
-// GEOS C API. Conversions run outside the timed loops; only the operations are timed.
+// Clipper 1 (integer units, scaled exactly like roiclip's default grid; the adapter the tests
+// use), Boost.Geometry and the GEOS C API. Conversions run outside the timed loops; only the
+// operations are timed.
 #pragma once
 
 #include <cstddef>
@@ -10,21 +11,17 @@
 #include <geos_c.h>
 #include <boost/geometry.hpp>
 #include <boost/geometry/geometries/point_xy.hpp>
-#include <clipper.hpp>
 
 #include <roiclip/geometry.hpp>
 
+#include "support/clipper1.hpp"
+
 namespace roiclip::bench {
 
-// ---- Clipper 1 ----------------------------------------------------------------------------
+// ---- Clipper 1: tests/support/clipper1.hpp (shared with the tests) -------------------------
 
-/// Snap to integer units with the rounding roiclip's grid uses (nearbyint(v * 256)).
-ClipperLib::Paths toClipper(const Paths& paths);
-/// Clipper's fill type for a roiclip fill rule (both count the winding of the raw (x, y)
-/// numbers; Clipper's Orientation() == true is roiclip's positive shoelace sum).
-ClipperLib::PolyFillType toClipperFill(FillRule rule);
-/// Filled area in square pixels of a Clipper solution (outer rings and holes together).
-double clipperArea(const ClipperLib::Paths& paths);
+using testing::clipperArea;
+using testing::toClipper;
 
 // ---- Boost.Geometry -----------------------------------------------------------------------
 

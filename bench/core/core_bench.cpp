@@ -208,7 +208,7 @@ void benchRoiclip(benchmark::State& state, Case& c) {
 void benchClipper(benchmark::State& state, Case& c) {
   const ClipperLib::Paths subject = toClipper(c.subject);
   const ClipperLib::Paths clipPaths = toClipper(c.clip);
-  const ClipperLib::PolyFillType fill = toClipperFill(c.rule);
+  const ClipperLib::PolyFillType fill = toClipper(c.rule);
   const auto inspect = [](const ClipperLib::Paths& r) { return Outcome{clipperArea(r), r.size()}; };
   if (!c.binary()) {
     measure(
@@ -240,7 +240,7 @@ void benchClipper(benchmark::State& state, Case& c) {
 // regions that touch at a vertex stay in one ring (a weaker contract than roiclip's output).
 void benchClipperUnion(benchmark::State& state, Case& c) {
   const ClipperLib::Paths subject = toClipper(c.subject);
-  const ClipperLib::PolyFillType fill = toClipperFill(c.rule);
+  const ClipperLib::PolyFillType fill = toClipper(c.rule);
   measure(
       state, c, Library::ClipperUnion, c.clipperTolerance,
       [&] {

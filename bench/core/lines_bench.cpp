@@ -143,16 +143,8 @@ void benchRoiclipLines(benchmark::State& state, LinesCase& c) {
 }
 
 void benchClipperLines(benchmark::State& state, LinesCase& c) {
-  ClipperLib::Paths lines;
-  for (const Path& l : c.lines) {
-    ClipperLib::Path path;
-    for (const Point& p : l) {
-      path.emplace_back(ClipperLib::cInt(std::nearbyint(p.x * kGridScale)),
-                        ClipperLib::cInt(std::nearbyint(p.y * kGridScale)));
-    }
-    lines.push_back(std::move(path));
-  }
-  const ClipperLib::Paths quad = toClipper({c.quad});
+  const ClipperLib::Paths lines = toClipper(c.lines);
+  const ClipperLib::Paths quad = toClipper(Paths{c.quad});
   // Clipper rounds the crossings with the quad's sides to integer units (up to 0.006 px of
   // length each), and on open paths whose first edge is horizontal it can swap the first two
   // points: the chain 277,306 278,306 279,305 came back as 278,306 277,306 279,305, which adds
@@ -180,7 +172,7 @@ void benchClipperLines(benchmark::State& state, LinesCase& c) {
             total += std::hypot(double(l[i].X - l[i - 1].X), double(l[i].Y - l[i - 1].Y));
           }
         }
-        return total / kGridScale;
+        return total / testing::kClipperUnits;
       });
 }
 

@@ -1,4 +1,4 @@
-// The conformance suites of ../shared/conformance as data-driven tests: one parameterised test per
+// The conformance suites of tests/data/conformance as data-driven tests: one parameterised test per
 // suite, one test per (case, operation).
 //
 // Every case is judged twice:
@@ -31,15 +31,18 @@
 #include <roiclip/io/geojson.hpp>
 #include <roiclip/roiclip.hpp>
 
-#include "oracle.hpp"
+#include "support/oracle.hpp"
 
 namespace roiclip::conformance {
 namespace {
 
 namespace fs = std::filesystem;
+using testing::SegmentProximity;
+using testing::windingNumber;
 
-const fs::path kSuites = fs::path(ROICLIP_SHARED) / "conformance";
-const fs::path kLists = fs::path(ROICLIP_TEST_DATA) / "conformance";
+// The suites (copied from two other projects, tests/data/conformance/README.md) and our lists.
+const fs::path kSuites = fs::path(ROICLIP_TEST_DATA) / "conformance";
+const fs::path kLists = kSuites;
 constexpr const char* kPolygonClipping = "polygon_clipping_e2e";
 constexpr const char* kMartinez = "martinez_generic";
 
@@ -182,20 +185,6 @@ Operation parseOperation(const std::string& name) {
   return {parseClipOp(name.c_str()), false};
 }
 
-bool apply(ClipOp op, bool a, bool b) {
-  switch (op) {
-    case ClipOp::Intersection:
-      return a && b;
-    case ClipOp::Union:
-      return a || b;
-    case ClipOp::Difference:
-      return a && !b;
-    case ClipOp::Xor:
-      return a != b;
-  }
-  return false;
-}
-
 struct Loaded {
   std::vector<Operand> operands;
   Operation operation;
@@ -205,11 +194,11 @@ struct Loaded {
   [[nodiscard]] bool truth(Point p) const {
     if (operands.empty()) return false;
     if (operation.reversed) {
-      return apply(operation.op, operands[1].contains(p), operands[0].contains(p));
+      return testing::combine(operation.op, operands[1].contains(p), operands[0].contains(p));
     }
     bool in = operands[0].contains(p);
     for (std::size_t i = 1; i < operands.size(); ++i) {
-      in = apply(operation.op, in, operands[i].contains(p));
+      in = testing::combine(operation.op, in, operands[i].contains(p));
     }
     return in;
   }

@@ -1,12 +1,13 @@
-// The oracle judges both engines, so it is tested on its own: exactness where doubles fail, and
-// winding numbers with both orientations.
+// The oracle (tests/support/oracle.hpp) judges both engines, so it is tested on its own:
+// exactness where doubles fail, winding numbers with both orientations, points on the boundary.
 #include <cmath>
+#include <optional>
 
 #include <gtest/gtest.h>
 
-#include "oracle.hpp"
+#include "support/oracle.hpp"
 
-namespace roiclip::conformance {
+namespace roiclip::testing {
 namespace {
 
 TEST(Oracle, OrientationIsExactWhereDoublesRoundToZero) {
@@ -37,6 +38,24 @@ TEST(Oracle, WindingNumberFollowsOrientation) {
   EXPECT_EQ(windingNumber(bowtie, Point(5, 1)), 0);
 }
 
+TEST(Oracle, ExactWindingSeesTheBoundaryOnAndOffTheGrid) {
+  const Paths square = {{{0, 0}, {4, 0}, {4, 4}, {0, 4}}};
+  EXPECT_EQ(exactWinding(square, Point(1, 1)), 1);
+  EXPECT_EQ(exactWinding(square, Point(5, 1)), 0);
+  EXPECT_EQ(exactWinding(square, Point(4, 2)), std::nullopt);  // on an edge (1/4096 grid)
+  EXPECT_EQ(exactWinding(square, Point(0, 0)), std::nullopt);  // at a vertex
+  // Off the grid the exact rational path decides: 0.1 is not a multiple of 1/4096.
+  EXPECT_EQ(exactWinding(square, Point(0.1, 0)), std::nullopt);
+  EXPECT_EQ(exactWinding(square, Point(0.1, 1e-300)), 1);
+  EXPECT_EQ(exactWinding(square, Point(0.1, -1e-300)), 0);
+  const Paths diagonal = {{{0, 0}, {0.3, 0.1}, {0.3, 1}}};
+  EXPECT_EQ(exactWinding(diagonal, Point(0.3, 0.1)), std::nullopt);
+  // The grid shortcut and the exact fallback agree where both apply.
+  EXPECT_EQ(orientation(Point(0, 0), Point(3, 1), Point(6, 2)), 0);
+  EXPECT_EQ(orientation(Point(0, 0), Point(3, 1), Point(6, 2 + 1.0 / 4096)), 1);
+  EXPECT_EQ(orientation(Point(0, 0), Point(3, 1), Point(6, 2 + 1e-9)), 1);
+}
+
 TEST(Oracle, ProximityFindsOnlyNearbyEdges) {
   const Paths rings = {{{0, 0}, {100, 0}, {100, 100}, {0, 100}}};
   const SegmentProximity near(rings, 0.5);
@@ -48,4 +67,4 @@ TEST(Oracle, ProximityFindsOnlyNearbyEdges) {
 }
 
 }  // namespace
-}  // namespace roiclip::conformance
+}  // namespace roiclip::testing

@@ -3,81 +3,20 @@
 // the error Clipper makes by rounding crossing points to its integer grid.
 #include <gtest/gtest.h>
 
-#include <clipper.hpp>
 #include <cmath>
 #include <cstdio>
 
 #include <roiclip/roiclip.hpp>
 
-#include "oracle.hpp"
+#include "support/clipper1.hpp"
+#include "support/oracle.hpp"
 
 namespace roiclip {
 namespace {
 
-constexpr double kUnits = 256.0;  // Clipper works on the same 1/256 px grid as roiclip
-
-ClipperLib::Paths toClipper(const Paths& paths) {
-  ClipperLib::Paths out;
-  for (const Path& p : paths) {
-    ClipperLib::Path q;
-    for (const Point& v : p) {
-      q.emplace_back(ClipperLib::cInt(std::llround(v.x * kUnits)),
-                     ClipperLib::cInt(std::llround(v.y * kUnits)));
-    }
-    out.push_back(q);
-  }
-  return out;
-}
-
-ClipperLib::PolyFillType toClipper(FillRule r) {
-  switch (r) {
-    case FillRule::EvenOdd:
-      return ClipperLib::pftEvenOdd;
-    case FillRule::NonZero:
-      return ClipperLib::pftNonZero;
-    case FillRule::Positive:
-      return ClipperLib::pftPositive;
-    case FillRule::Negative:
-      return ClipperLib::pftNegative;
-  }
-  return ClipperLib::pftEvenOdd;
-}
-
-ClipperLib::ClipType toClipper(ClipOp op) {
-  switch (op) {
-    case ClipOp::Intersection:
-      return ClipperLib::ctIntersection;
-    case ClipOp::Union:
-      return ClipperLib::ctUnion;
-    case ClipOp::Difference:
-      return ClipperLib::ctDifference;
-    case ClipOp::Xor:
-      return ClipperLib::ctXor;
-  }
-  return ClipperLib::ctIntersection;
-}
-
-struct AreaAndPerimeter {
-  double area = 0;
-  double perimeter = 0;
-};
-
-AreaAndPerimeter measure(const ClipperLib::Paths& paths) {
-  AreaAndPerimeter m;
-  for (const auto& p : paths) {
-    m.area += ClipperLib::Area(p) / (kUnits * kUnits);
-    for (std::size_t i = 0; i < p.size(); ++i) {
-      const auto& a = p[i];
-      const auto& b = p[(i + 1) % p.size()];
-      m.perimeter += std::hypot(double(b.X - a.X), double(b.Y - a.Y)) / kUnits;
-    }
-  }
-  return m;
-}
-
-// Clipper moves each crossing point by at most half a unit diagonally; the area changes by at
-// most that displacement times the perimeter of its output.
-double roundingTolerance(const AreaAndPerimeter& m) { return m.perimeter * 0.71 / kUnits + 1e-9; }
+using testing::measure;
+using testing::roundingTolerance;
+using testing::toClipper;
 
 constexpr FillRule kRules[] = {FillRule::EvenOdd, FillRule::NonZero, FillRule::Positive,
                                FillRule::Negative};
@@ -93,14 +32,15 @@ Paths randomSet(std::mt19937& rng, int kind) {
 
 TEST(ClipperOracle, SimplifyAreasAgree) {
   std::mt19937 rng(2024);
-  int compared = 0, agreed = 0, clipperWrong = 0;
+  int compared = 0, agreed = 0, clipperWrong = 0, nonEmpty = 0;
   for (int iter = 0; iter < 300; ++iter) {
     const Paths input = randomSet(rng, iter % 3);
     for (FillRule rule : kRules) {
       ClipperLib::Paths solution;
       ClipperLib::SimplifyPolygons(toClipper(input), solution, toClipper(rule));
-      const AreaAndPerimeter expected = measure(solution);
+      const testing::ClipperMeasure expected = measure(solution);
       const double ours = simplify(input, rule).area();
+      if (ours > 0) ++nonEmpty;
       if (std::fabs(ours - std::fabs(expected.area)) > roundingTolerance(expected)) {
         // Disagreement: the slab integration of the exact winding numbers decides.
         const double truth = testing::slabArea(
@@ -121,7 +61,8 @@ TEST(ClipperOracle, SimplifyAreasAgree) {
       ++compared;
     }
   }
-  EXPECT_EQ(compared, 1200);
+  // Most cases must have a filled region to compare (1171 of 1200 at this seed).
+  EXPECT_GT(nonEmpty, compared * 3 / 4);
   // Clipper 1 is the oracle for the bulk of cases; it must not disagree more than rarely.
   EXPECT_GT(agreed, compared * 9 / 10);
   std::printf(
@@ -132,7 +73,7 @@ TEST(ClipperOracle, SimplifyAreasAgree) {
 
 TEST(ClipperOracle, ClipAreasAgree) {
   std::mt19937 rng(4048);
-  int compared = 0, agreed = 0, clipperWrong = 0;
+  int compared = 0, agreed = 0, clipperWrong = 0, nonEmpty = 0;
   for (int iter = 0; iter < 150; ++iter) {
     const Paths a = randomSet(rng, iter % 3);
     const Paths b = randomSet(rng, (iter / 3) % 3);
@@ -144,8 +85,9 @@ TEST(ClipperOracle, ClipAreasAgree) {
           c.AddPaths(toClipper(b), ClipperLib::ptClip, true);
           ClipperLib::Paths solution;
           ASSERT_TRUE(c.Execute(toClipper(op), solution, toClipper(ra), toClipper(rb)));
-          const AreaAndPerimeter expected = measure(solution);
+          const testing::ClipperMeasure expected = measure(solution);
           const double ours = clip(op, a, b, ra, rb).area();
+          if (ours > 0) ++nonEmpty;
           if (std::fabs(ours - expected.area) > roundingTolerance(expected)) {
             const double truth = testing::slabArea({&a, &b}, [&](const std::vector<long long>& w) {
               return testing::combine(op, isFilled(ra, w[0]), isFilled(rb, w[1]));
@@ -169,7 +111,8 @@ TEST(ClipperOracle, ClipAreasAgree) {
       }
     }
   }
-  EXPECT_EQ(compared, 150 * 64);
+  // Most cases must have a filled result to compare (8255 of 9600 at this seed).
+  EXPECT_GT(nonEmpty, compared * 3 / 4);
   EXPECT_GT(agreed, compared * 9 / 10);
   std::printf(
       "clip: %d cases, %d agree with Clipper 1, %d where Clipper 1 is wrong "
@@ -204,7 +147,7 @@ TEST(ClipperOracle, LargePixelContourAgainstQuad) {
   ClipperLib::Paths solution;
   ASSERT_TRUE(c.Execute(ClipperLib::ctIntersection, solution, ClipperLib::pftEvenOdd,
                         ClipperLib::pftEvenOdd));
-  const AreaAndPerimeter expected = measure(solution);
+  const testing::ClipperMeasure expected = measure(solution);
   const PolygonSet convexPath = intersect(subject, quad);
   EXPECT_NEAR(convexPath.area(), expected.area, roundingTolerance(expected));
   // Union and difference take the general path; |A| = |A - Q| + |A n Q| ties them together.

@@ -11,35 +11,15 @@
 
 #include <roiclip/roiclip.hpp>
 
-#include "oracle.hpp"
+#include "data_files.hpp"
+#include "support/oracle.hpp"
 
 namespace roiclip {
 namespace {
 
-namespace fs = std::filesystem;
+std::vector<std::string> fixtureFiles() { return testing::jsonFiles({"core", "core_bugs"}); }
 
-std::vector<std::string> fixtureFiles() {
-  std::vector<std::string> files;
-  for (const char* sub : {"/core", "/core_bugs"}) {
-    const fs::path dir = fs::path(ROICLIP_TEST_DATA) / (sub + 1);
-    if (!fs::exists(dir)) continue;
-    for (const auto& entry : fs::directory_iterator(dir)) {
-      if (entry.path().extension() == ".json") files.push_back(entry.path().string());
-    }
-  }
-  std::sort(files.begin(), files.end());
-  return files;
-}
-
-Paths readPaths(const nlohmann::json& j) {
-  Paths out;
-  for (const auto& ring : j) {
-    Path p;
-    for (const auto& v : ring) p.emplace_back(v.at(0).get<double>(), v.at(1).get<double>());
-    out.push_back(std::move(p));
-  }
-  return out;
-}
+using testing::readPaths;
 
 class Fixture : public ::testing::TestWithParam<std::string> {};
 
@@ -93,11 +73,7 @@ TEST_P(Fixture, AgreesWithOracles) {
 
 INSTANTIATE_TEST_SUITE_P(Data, Fixture, ::testing::ValuesIn(fixtureFiles()),
                          [](const ::testing::TestParamInfo<std::string>& param) {
-                           std::string name = fs::path(param.param).stem().string();
-                           for (char& c : name) {
-                             if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
-                           }
-                           return name;
+                           return testing::testNameOf(param.param);
                          });
 
 TEST(Fixture, FolderIsNotEmpty) { EXPECT_GE(fixtureFiles().size(), 3u); }

@@ -1,7 +1,8 @@
 // The core at its limits, scaled down to keep the suite fast (bench/limits runs the full sizes
 // with time and memory figures): degenerate and invalid operands of clip() (simplify()'s are in
-// simplify_test.cpp), deep nesting through clip, long pixel contours and many crossings, each
-// against areas known in closed form (limit_shapes.hpp) or the slab integration (oracle.hpp).
+// stages/input_test.cpp), deep nesting through clip, long pixel contours and many crossings, each
+// against areas known in closed form (limit_shapes.hpp) or the slab integration
+// (support/oracle.hpp).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -10,7 +11,7 @@
 #include <roiclip/roiclip.hpp>
 
 #include "limit_shapes.hpp"
-#include "oracle.hpp"
+#include "support/oracle.hpp"
 
 namespace roiclip {
 namespace {
@@ -41,7 +42,7 @@ TEST(Limits, DegenerateOperandsOfClipContributeNothing) {
   }
 }
 
-// simplify_test covers NaN, +inf and 1e7 in a subject path and the range edge on one side.
+// stages/input_test.cpp covers NaN, +inf and 1e7 in a subject path and the range edge on one side.
 TEST(Limits, InvalidClipOperandIsRejectedWithItsLocation) {
   const double edge = 4194304.0;  // 2^30 grid units at the default scale
   const auto message = [](const Paths& subject, const Paths& region) -> std::string {

@@ -14,7 +14,7 @@
 
 #include <roiclip/roiclip.hpp>
 
-#include "oracle.hpp"
+#include "support/oracle.hpp"
 
 namespace roiclip {
 namespace {

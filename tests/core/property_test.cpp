@@ -8,7 +8,7 @@
 
 #include <roiclip/roiclip.hpp>
 
-#include "oracle.hpp"
+#include "support/oracle.hpp"
 
 namespace roiclip {
 namespace {
@@ -80,7 +80,7 @@ class SimplifyProperty : public ::testing::TestWithParam<int> {};
 TEST_P(SimplifyProperty, MatchesWindingOracle) {
   const int kind = GetParam();
   std::mt19937 rng(1234 + kind);
-  int cases = 0;
+  int nonEmpty = 0;  // cases that exercised the oracles with a filled region
   for (int iter = 0; iter < 400; ++iter) {
     const Paths input = randomInput(rng, kind);
     for (FillRule rule : kRules) {
@@ -102,10 +102,12 @@ TEST_P(SimplifyProperty, MatchesWindingOracle) {
       ASSERT_EQ(problems, "") << toString(rule) << " input " << describe(input);
       ASSERT_EQ(report.mismatches, 0)
           << toString(rule) << " " << report.firstMismatch << " input " << describe(input);
-      ++cases;
+      if (!result.empty()) ++nonEmpty;
     }
   }
-  EXPECT_EQ(cases, 1600);
+  // Most of the 1600 cases must have a filled region to check (1385 to 1585 per kind at these
+  // seeds); a generator or rule loop that went degenerate would pass the checks above vacuously.
+  EXPECT_GT(nonEmpty, 800);
 }
 
 INSTANTIATE_TEST_SUITE_P(Kinds, SimplifyProperty, ::testing::Range(0, kKinds));
@@ -115,7 +117,7 @@ class ClipProperty : public ::testing::TestWithParam<int> {};
 TEST_P(ClipProperty, MatchesWindingOracleAndAreaIdentities) {
   const int kind = GetParam();
   std::mt19937 rng(777 + kind);
-  int cases = 0;
+  int overlapping = 0;  // operand pairs whose intersection is not empty: real clipping
   for (int iter = 0; iter < 120; ++iter) {
     const Paths a = randomInput(rng, kind);
     const Paths b = randomInput(rng, (kind + iter) % kKinds);
@@ -144,8 +146,8 @@ TEST_P(ClipProperty, MatchesWindingOracleAndAreaIdentities) {
           ASSERT_EQ(report.mismatches, 0)
               << toString(op) << " " << toString(ra) << "/" << toString(rb) << " "
               << report.firstMismatch << " A " << describe(a) << " B " << describe(b);
-          ++cases;
         }
+        if (area[0] > 0) ++overlapping;
         const double areaA = simplify(a, ra).area();
         const double areaB = simplify(b, rb).area();
         const double tol = 1e-9 * (areaA + areaB + 1.0);
@@ -156,7 +158,9 @@ TEST_P(ClipProperty, MatchesWindingOracleAndAreaIdentities) {
       }
     }
   }
-  EXPECT_EQ(cases, 120 * 64);
+  // The operands must actually meet in many of the 1920 operand and rule pairs (311 to 1459 per
+  // kind at these seeds), or the operations are only tested on disjoint inputs.
+  EXPECT_GT(overlapping, 240);
 }
 
 INSTANTIATE_TEST_SUITE_P(Kinds, ClipProperty, ::testing::Range(0, kKinds));

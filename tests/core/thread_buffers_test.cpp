@@ -15,7 +15,7 @@
 
 #include <roiclip/roiclip.hpp>
 
-#include "oracle.hpp"
+#include "support/oracle.hpp"
 
 // Bytes live in operator new, counted for this test binary (works under AddressSanitizer too,
 // unlike mallinfo2).

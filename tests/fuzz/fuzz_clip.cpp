@@ -1,5 +1,5 @@
 // libFuzzer target: roiclip::clip on two small path sets, checked against the exact winding
-// numbers of both operands combined by the operation (tests/core/oracle.hpp).
+// numbers of both operands combined by the operation (tests/support/oracle.hpp).
 //
 // Input bytes: [h0: subject rule (bits 0-1), clip rule (bits 2-3), op (bits 4-5),
 //               clip is the convex hull of its points (bit 6), subject is (bit 7)]

@@ -1,5 +1,5 @@
 // libFuzzer target: roiclip::clipLines, both parts, checked against the exact winding numbers of
-// the region at points sampled along the input lines (tests/core/oracle.hpp).
+// the region at points sampled along the input lines (tests/support/oracle.hpp).
 //
 // Input bytes: [h0: region fill rule (bits 0-1), region is the convex hull of its points
 //               (bit 2), reverse that hull (bit 3)]

@@ -1,5 +1,5 @@
 // libFuzzer target: roiclip::simplify on small path sets, checked against the exact winding
-// number of the input (tests/core/oracle.hpp).
+// number of the input (tests/support/oracle.hpp).
 //
 // Input bytes: [header: fill rule (bits 0-1), coordinate mode (bits 2-4)]
 //              then paths, each a length byte (0..15) and one byte per vertex (x low nibble,

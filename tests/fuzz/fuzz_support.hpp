@@ -1,6 +1,6 @@
 // Shared pieces of the libFuzzer targets in tests/fuzz: failing loudly, the exception policy,
 // decoding bytes into small path sets, and the check of a result against the independent
-// oracles of tests/core/oracle.hpp.
+// oracles of tests/support/oracle.hpp.
 //
 // Every target defines LLVMFuzzerTestOneInput. A bug (wrong region, broken ring structure, an
 // InternalError, an exception outside roiclip::Error) ends in std::abort(), which libFuzzer
@@ -21,7 +21,7 @@
 
 #include <roiclip/roiclip.hpp>
 
-#include "core/oracle.hpp"
+#include "support/oracle.hpp"
 
 namespace roiclip::fuzz {
 

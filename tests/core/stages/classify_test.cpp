@@ -1,0 +1,69 @@
+// Stage 2 (src/core/classify.cpp): from the winding numbers below a piece and its contribution,
+// the fill rules and the operation decide whether it bounds the result and on which side.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <roiclip/roiclip.hpp>
+
+#include "pipeline.hpp"
+#include "stage_support.hpp"
+#include "support/oracle.hpp"
+
+namespace roiclip {
+namespace {
+
+detail::Windings w(std::int64_t s, std::int64_t c = 0) { return {s, c}; }
+
+TEST(StageClassify, SimplifyDecidesFromTheSubjectsFillRule) {
+  const auto evenOdd = stages::simplifyWith(FillRule::EvenOdd);
+  EXPECT_EQ(detail::classifyPiece(w(0), w(1), evenOdd), detail::Side::Above);
+  EXPECT_EQ(detail::classifyPiece(w(1), w(-1), evenOdd), detail::Side::Below);
+  EXPECT_EQ(detail::classifyPiece(w(1), w(1), evenOdd), detail::Side::Below);  // 2 is even
+  EXPECT_EQ(detail::classifyPiece(w(2), w(1), evenOdd), detail::Side::Above);
+  EXPECT_EQ(detail::classifyPiece(w(0), w(2), evenOdd), detail::Side::None);
+  const auto nonZero = stages::simplifyWith(FillRule::NonZero);
+  EXPECT_EQ(detail::classifyPiece(w(1), w(1), nonZero), detail::Side::None);  // 1 | 2
+  EXPECT_EQ(detail::classifyPiece(w(-1), w(1), nonZero), detail::Side::Below);
+  const auto positive = stages::simplifyWith(FillRule::Positive);
+  EXPECT_EQ(detail::classifyPiece(w(0), w(-1), positive), detail::Side::None);
+  EXPECT_EQ(detail::classifyPiece(w(-1), w(2), positive), detail::Side::Above);
+  const auto negative = stages::simplifyWith(FillRule::Negative);
+  EXPECT_EQ(detail::classifyPiece(w(0), w(-1), negative), detail::Side::Above);
+  // A clip winding number means nothing to simplify.
+  EXPECT_EQ(detail::classifyPiece(w(0, 0), w(0, 1), evenOdd), detail::Side::None);
+}
+
+TEST(StageClassify, BinaryOperationsCombineBothOperands) {
+  // Below: in the subject only; above: in both.
+  const detail::Windings below = w(1, 0), up = w(0, 1);
+  EXPECT_EQ(detail::classifyPiece(below, up, stages::clipWith(ClipOp::Intersection)),
+            detail::Side::Above);
+  EXPECT_EQ(detail::classifyPiece(below, up, stages::clipWith(ClipOp::Union)), detail::Side::None);
+  EXPECT_EQ(detail::classifyPiece(below, up, stages::clipWith(ClipOp::Difference)),
+            detail::Side::Below);
+  EXPECT_EQ(detail::classifyPiece(below, up, stages::clipWith(ClipOp::Xor)), detail::Side::Below);
+  // Each operand has its own rule: the clip's w = 2 is outside under even-odd, inside under
+  // non-zero.
+  auto how = stages::clipWith(ClipOp::Intersection);
+  how.clipRule = FillRule::NonZero;
+  EXPECT_EQ(detail::classifyPiece(w(1, 1), w(0, 1), how), detail::Side::None);
+  how.clipRule = FillRule::EvenOdd;
+  EXPECT_EQ(detail::classifyPiece(w(1, 1), w(0, 1), how), detail::Side::Below);
+}
+
+TEST(StageClassify, OpenPiecesAreInsideOnTheBoundaryOrOutside) {
+  const auto how = stages::simplifyWith(FillRule::EvenOdd);
+  EXPECT_EQ(detail::classifyOpenPiece(w(1), w(1), how), detail::LinePlace::Inside);
+  EXPECT_EQ(detail::classifyOpenPiece(w(0), w(1), how), detail::LinePlace::Boundary);
+  EXPECT_EQ(detail::classifyOpenPiece(w(1), w(2), how), detail::LinePlace::Boundary);
+  EXPECT_EQ(detail::classifyOpenPiece(w(0), w(2), how), detail::LinePlace::Outside);
+  EXPECT_EQ(detail::classifyOpenPiece(w(0), w(0), how), detail::LinePlace::Outside);
+}
+
+}  // namespace
+}  // namespace roiclip

@@ -1,0 +1,76 @@
+// Helpers of the stage tests: run stages 0 to 1 on pixel inputs, name arrangement vertices, and
+// find points just below and above a piece.
+#pragma once
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <roiclip/roiclip.hpp>
+
+#include "pipeline.hpp"
+
+namespace roiclip::stages {
+
+/// Grid{1}: grid units are pixels, so arrangement vertices read as the input's points.
+inline const Grid kUnitGrid{1.0};
+
+inline detail::Combination simplifyWith(FillRule rule) {
+  detail::Combination how;
+  how.subjectRule = rule;
+  return how;
+}
+
+inline detail::Combination clipWith(ClipOp op) {
+  detail::Combination how;
+  how.binary = true;
+  how.op = op;
+  return how;
+}
+
+/// Stages 0 and 1 (with 2 inside the sweep) of the general path.
+inline detail::Arrangement arrange(const Paths& subject, const Paths* clipPaths,
+                                   const detail::Combination& how, const Grid& grid = kUnitGrid) {
+  std::vector<detail::InputEdge> edges;
+  detail::appendInputEdges(subject, 0, grid, edges);
+  if (clipPaths != nullptr) detail::appendInputEdges(*clipPaths, 1, grid, edges);
+  return detail::splitEdges(edges, {}, how);
+}
+
+inline std::string name(const detail::XPoint& p) {
+  const auto str = [](detail::i128 v) { return std::to_string(static_cast<long long>(v)); };
+  if (p.w == 1) return "(" + str(p.x) + "," + str(p.y) + ")";
+  return "(" + str(p.x) + "/" + str(p.w) + "," + str(p.y) + "/" + str(p.w) + ")";
+}
+
+/// "(x,y)" of every arrangement vertex, by vertex id.
+inline std::vector<std::string> vertexNames(const detail::Arrangement& a) {
+  std::vector<std::string> names;
+  for (const detail::XPoint& v : a.vertices) names.push_back(name(v));
+  return names;
+}
+
+/// Points at distance d below and above the middle of a piece (in grid units). Below a vertical
+/// piece is its right side: the sweep orders vertical edges as very steep rising ones.
+inline std::pair<Point, Point> sidePoints(const detail::Arrangement& a, const detail::EdgePiece& p,
+                                          double d) {
+  const detail::XPoint& l = a.vertices[std::size_t(p.left)];
+  const detail::XPoint& r = a.vertices[std::size_t(p.right)];
+  const Point mid((l.dx() + r.dx()) / 2, (l.dy() + r.dy()) / 2);
+  if (p.lineA.x == p.lineB.x) return {mid + Point(d, 0), mid - Point(d, 0)};
+  return {mid - Point(0, d), mid + Point(0, d)};
+}
+
+/// Shoelace sum of a traced ring in the raw frame (grid units).
+inline double rawSignedArea(const detail::Arrangement& a, const detail::TracedRing& ring) {
+  double twice = 0;
+  for (std::size_t i = 0; i < ring.vertices.size(); ++i) {
+    const detail::XPoint& p = a.vertices[std::size_t(ring.vertices[i])];
+    const detail::XPoint& q =
+        a.vertices[std::size_t(ring.vertices[(i + 1) % ring.vertices.size()])];
+    twice += p.dx() * q.dy() - q.dx() * p.dy();
+  }
+  return twice / 2;
+}
+
+}  // namespace roiclip::stages
