@@ -102,11 +102,13 @@ Paths toPaths(const py::handle& object, const std::string& operand) {
     }
     return {toPath(a, operand + " path 0")};
   }
+  // shapely geometries (and anything else with __geo_interface__), as from_shapely() reads them.
+  if (py::hasattr(object, "__geo_interface__")) return geoInterfacePaths(object);
   if (py::isinstance<py::str>(object) || py::isinstance<py::bytes>(object) ||
       !PySequence_Check(object.ptr())) {
     throw InvalidInputError(operand +
                             ": expected a path (array of shape (N, 2) or (N, 1, 2)), a sequence "
-                            "of paths or a PolygonSet, got " +
+                            "of paths, a PolygonSet or a geometry with __geo_interface__, got " +
                             typeName(object));
   }
   const py::sequence seq = py::reinterpret_borrow<py::sequence>(object);
@@ -115,8 +117,8 @@ Paths toPaths(const py::handle& object, const std::string& operand) {
   Paths paths;
   paths.reserve(seq.size());
   for (const py::handle item : seq) {
-    if (py::isinstance<PolygonSet>(item)) {
-      const Paths rings = item.cast<const PolygonSet&>().toPaths();
+    if (py::isinstance<PolygonSet>(item) || py::hasattr(item, "__geo_interface__")) {
+      const Paths rings = toPaths(item, operand);
       paths.insert(paths.end(), rings.begin(), rings.end());
     } else {
       paths.push_back(toPath(item, operand + " path " + std::to_string(paths.size())));

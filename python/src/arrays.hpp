@@ -16,8 +16,9 @@ namespace roiclip::python {
 namespace py = pybind11;
 
 /// A geometry operand as Python passes it: a PolygonSet, one path (array-like of shape (N, 2) or
-/// cv2's (N, 1, 2), any real dtype) or a sequence of paths (a list, cv2.findContours' tuple, a
-/// (K, N, 2) array). Kept as the Python object until toPaths() converts it, so errors can name
+/// cv2's (N, 1, 2), any real dtype), a sequence of paths (a list, cv2.findContours' tuple, a
+/// (K, N, 2) array) or a shapely geometry (anything with __geo_interface__, see
+/// geoInterfacePaths()). Kept as the Python object until toPaths() converts it, so errors can name
 /// the operand ("subject path 2: ...").
 struct PathsArg {
   py::object object;

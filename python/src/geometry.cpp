@@ -120,22 +120,19 @@ void bindGeometry(py::module_& m) {
       .value("EVEN_ODD", FillRule::EvenOdd, "w is odd (what cv2.fillPoly draws)")
       .value("NON_ZERO", FillRule::NonZero, "w != 0")
       .value("POSITIVE", FillRule::Positive, "w > 0")
-      .value("NEGATIVE", FillRule::Negative, "w < 0")
-      .def("__str__", [](FillRule r) { return toString(r); });
+      .value("NEGATIVE", FillRule::Negative, "w < 0");
   py::enum_<ClipOp>(m, "ClipOp",
                     "Boolean operation between a subject and a clip region. Functions also "
                     "accept the names 'intersection', 'union', 'difference', 'xor'.")
       .value("INTERSECTION", ClipOp::Intersection, "subject AND clip (the ROI case)")
       .value("UNION", ClipOp::Union, "subject OR clip")
       .value("DIFFERENCE", ClipOp::Difference, "subject AND NOT clip")
-      .value("XOR", ClipOp::Xor, "subject XOR clip")
-      .def("__str__", [](ClipOp op) { return toString(op); });
+      .value("XOR", ClipOp::Xor, "subject XOR clip");
   py::enum_<LinePart>(m, "LinePart",
                       "Which parts of open polylines clip_lines() returns ('inside', 'outside').")
       .value("INSIDE", LinePart::Inside,
              "the parts in the region, including parts running along its boundary")
-      .value("OUTSIDE", LinePart::Outside, "the parts outside it")
-      .def("__str__", [](LinePart p) { return toString(p); });
+      .value("OUTSIDE", LinePart::Outside, "the parts outside it");
 
   py::class_<Polygon>(m, "Polygon",
                       "One connected filled region of a PolygonSet: an outer ring and its holes. "
