@@ -24,6 +24,8 @@ std::string typeName(const py::handle& object) {
   return py::str(py::type::handle_of(object).attr("__name__")).cast<std::string>();
 }
 
+std::string dtypeName(const py::dtype& dt) { return py::str(dt.attr("name")).cast<std::string>(); }
+
 /// A numeric array-like as a C-contiguous float64 array (numpy converts, in C).
 /// @throws InvalidInputError naming `name` when it is not numeric.
 py::array_t<double> numericArray(const py::handle& object, const std::string& name) {
@@ -34,8 +36,7 @@ py::array_t<double> numericArray(const py::handle& object, const std::string& na
   const char kind = a.dtype().kind();
   if (kind != 'i' && kind != 'u' && kind != 'f') {
     throw InvalidInputError(name + ": expected numbers (int or float), got an array of dtype " +
-                            py::str(a.dtype().attr("name")).cast<std::string>() + " and shape " +
-                            shapeText(a));
+                            dtypeName(a.dtype()) + " and shape " + shapeText(a));
   }
   return py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(a);
 }
@@ -58,6 +59,21 @@ Path toPath(const py::handle& object, const std::string& name, bool allowZ = fal
   Path path(n);
   for (std::size_t i = 0; i < n; ++i) path[i] = Point(d[stride * i], d[stride * i + 1]);
   return path;
+}
+
+/// numpy dtype names indexed by OpenCV depth (CV_8U = 0 .. CV_64F = 6).
+constexpr const char* kDtypeOfDepth[] = {"uint8", "int8",    "uint16", "int16",
+                                         "int32", "float32", "float64"};
+
+/// The OpenCV depth of a numpy dtype, or -1. Bool masks (one byte, 0 or 1) count as CV_8U.
+int depthOf(const py::dtype& dt) {
+  if (dt.kind() == 'b') return CV_8U;
+  if (dt.byteorder() == '>') return -1;  // big-endian data would be misread
+  const std::string name = dtypeName(dt);
+  for (int depth = CV_8U; depth <= CV_64F; ++depth) {
+    if (name == kDtypeOfDepth[depth]) return depth;
+  }
+  return -1;
 }
 
 bool isNumber(const py::handle& h) {
@@ -195,21 +211,9 @@ py::array_t<double> toArray(const Point& point) {
 cv::Mat matView(const py::handle& object, const std::string& name, py::array& keep) {
   keep = py::array::ensure(object, py::array::c_style);
   if (!keep) throw InvalidInputError(name + ": expected a numpy array, got " + typeName(object));
-  const py::dtype dt = keep.dtype();
-  const char kind = dt.kind();
-  const auto size = dt.itemsize();
-  int depth = -1;
-  if (kind == 'u' && size == 1) depth = CV_8U;
-  if (kind == 'i' && size == 1) depth = CV_8S;
-  if (kind == 'u' && size == 2) depth = CV_16U;
-  if (kind == 'i' && size == 2) depth = CV_16S;
-  if (kind == 'i' && size == 4) depth = CV_32S;
-  if (kind == 'f' && size == 4) depth = CV_32F;
-  if (kind == 'f' && size == 8) depth = CV_64F;
-  if (kind == 'b') depth = CV_8U;  // bool masks: one byte, 0 or 1
+  const int depth = depthOf(keep.dtype());
   if (depth < 0) {
-    throw InvalidInputError(name + ": unsupported dtype " +
-                            py::str(dt.attr("name")).cast<std::string>() +
+    throw InvalidInputError(name + ": unsupported dtype " + dtypeName(keep.dtype()) +
                             " (expected uint8, int8, uint16, int16, int32, float32 or float64)");
   }
   if (keep.ndim() != 2 && !(keep.ndim() == 3 && keep.shape(2) >= 1 && keep.shape(2) <= CV_CN_MAX)) {
@@ -223,30 +227,7 @@ cv::Mat matView(const py::handle& object, const std::string& name, py::array& ke
 
 py::array toArray(cv::Mat mat) {
   if (!mat.isContinuous()) mat = mat.clone();
-  py::dtype dt;
-  switch (mat.depth()) {
-    case CV_8U:
-      dt = py::dtype::of<std::uint8_t>();
-      break;
-    case CV_8S:
-      dt = py::dtype::of<std::int8_t>();
-      break;
-    case CV_16U:
-      dt = py::dtype::of<std::uint16_t>();
-      break;
-    case CV_16S:
-      dt = py::dtype::of<std::int16_t>();
-      break;
-    case CV_32S:
-      dt = py::dtype::of<std::int32_t>();
-      break;
-    case CV_32F:
-      dt = py::dtype::of<float>();
-      break;
-    default:
-      dt = py::dtype::of<double>();
-      break;
-  }
+  const py::dtype dt(kDtypeOfDepth[mat.depth()]);
   std::vector<py::ssize_t> shape = {mat.rows, mat.cols};
   if (mat.channels() > 1) shape.push_back(mat.channels());
   auto* owner = new cv::Mat(mat);

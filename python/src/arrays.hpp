@@ -104,6 +104,9 @@ struct enum_name_caster {
   static handle cast(const Arg& arg, return_value_policy policy, handle parent) {
     return make_caster<Enum>::cast(arg.value, policy, parent);
   }
+  template <typename T>
+  using cast_op_type = Arg&;
+  explicit operator Arg&() { return value; }
   Arg value;
 };
 
@@ -111,26 +114,17 @@ template <>
 struct type_caster<roiclip::python::FillRuleArg>
     : enum_name_caster<roiclip::python::FillRuleArg, roiclip::FillRule, roiclip::parseFillRule> {
   static constexpr auto name = const_name("FillRule | str");
-  template <typename T>
-  using cast_op_type = roiclip::python::FillRuleArg&;
-  explicit operator roiclip::python::FillRuleArg&() { return value; }
 };
 template <>
 struct type_caster<roiclip::python::ClipOpArg>
     : enum_name_caster<roiclip::python::ClipOpArg, roiclip::ClipOp, roiclip::parseClipOp> {
   static constexpr auto name = const_name("ClipOp | str");
-  template <typename T>
-  using cast_op_type = roiclip::python::ClipOpArg&;
-  explicit operator roiclip::python::ClipOpArg&() { return value; }
 };
 template <>
 struct type_caster<roiclip::python::LinePartArg>
     : enum_name_caster<roiclip::python::LinePartArg, roiclip::LinePart,
                        roiclip::python::parseLinePart> {
   static constexpr auto name = const_name("LinePart | str");
-  template <typename T>
-  using cast_op_type = roiclip::python::LinePartArg&;
-  explicit operator roiclip::python::LinePartArg&() { return value; }
 };
 
 }  // namespace pybind11::detail

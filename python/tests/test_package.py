@@ -7,7 +7,7 @@ import pathlib
 import roiclip
 
 STUB = pathlib.Path(roiclip.__file__).with_name("__init__.pyi")
-STUB_ONLY = {"PathLike", "Paths", "Shape", "FillRuleLike", "ClipOpLike", "LinePartLike"}
+STUB_ONLY = {"_Enum", "PathLike", "Paths", "Shape", "FillRuleLike", "ClipOpLike", "LinePartLike"}
 
 
 def _stub_names():
