@@ -283,7 +283,6 @@ def compare_masks(
 def boundary_band_mask(paths: Paths, band: float, shape: Shape) -> npt.NDArray[np.uint8]: ...
 
 class MaskCheck:
-    clipped: PolygonSet
     vector_vs_raster: MaskComparison
     @property
     def vector_vs_opencv(self) -> Optional[MaskComparison]: ...
@@ -294,6 +293,7 @@ class MaskCheck:
 def check_roi_clip(
     subject: Paths,
     roi: Paths,
+    result: PolygonSet,
     shape: Shape,
     subject_fill_rule: FillRuleLike = "evenodd",
     roi_fill_rule: FillRuleLike = "evenodd",
@@ -301,4 +301,4 @@ def check_roi_clip(
     exact_band: float = ...,
     opencv_band: float = ...,
 ) -> MaskCheck:
-    """Clip subject to roi and compare with the raster routes off a boundary band."""
+    """Check result (clip(op, subject, roi)) against the raster routes off a boundary band."""

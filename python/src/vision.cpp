@@ -412,8 +412,6 @@ void bindVision(py::module_& m) {
       "uint8 mask (255) of the pixels whose centre lies within `band` px of an edge of `paths`.");
 
   py::class_<opencv::MaskCheck>(m, "MaskCheck", "Everything check_roi_clip() computed.")
-      .def_readonly("clipped", &opencv::MaskCheck::clipped,
-                    "The clip result (PolygonSet) that was checked.")
       .def_readonly("vector_vs_raster", &opencv::MaskCheck::vectorVsRaster,
                     "rasterize(clipped) against the raster route (rasterize(subject) op "
                     "rasterize(roi)), band exact_band.")
@@ -431,9 +429,9 @@ void bindVision(py::module_& m) {
 
   m.def(
       "check_roi_clip",
-      [](const PathsArg& subject, const PathsArg& roi, const py::object& shape,
-         const FillRuleArg& subjectRule, const FillRuleArg& roiRule, const ClipOpArg& op,
-         double exactBand, double openCvBand) {
+      [](const PathsArg& subject, const PathsArg& roi, const PolygonSet& result,
+         const py::object& shape, const FillRuleArg& subjectRule, const FillRuleArg& roiRule,
+         const ClipOpArg& op, double exactBand, double openCvBand) {
         const Paths s = toPaths(subject.object, "subject");
         const Paths r = toPaths(roi.object, "clip");
         const cv::Size size = toSize(shape);
@@ -442,13 +440,14 @@ void bindVision(py::module_& m) {
         options.exactBand = exactBand;
         options.openCvBand = openCvBand;
         py::gil_scoped_release release;
-        return opencv::checkRoiClip(s, r, subjectRule.value, roiRule.value, size, options);
+        return opencv::checkRoiClip(s, r, result, subjectRule.value, roiRule.value, size, options);
       },
-      py::arg("subject"), py::arg("roi"), py::arg("shape"),
+      py::arg("subject"), py::arg("roi"), py::arg("result"), py::arg("shape"),
       py::arg("subject_fill_rule") = "evenodd", py::arg("roi_fill_rule") = "evenodd",
       py::arg("op") = "intersection", py::arg("exact_band") = opencv::kExactBand,
       py::arg("opencv_band") = opencv::kOpenCvBand,
-      "The project's mask check: clip `subject` to `roi` with the core and compare "
+      "The project's mask check: is `result` (a PolygonSet) what clip(op, subject, roi) should "
+      "be? It never clips; it compares "
       "rasterize(result) with rasterize(subject) AND rasterize(roi) (off `exact_band`) and, for "
       "even-odd/even-odd, with cv2.fillPoly(subject) AND cv2.fillPoly(roi) (off `opencv_band`); "
       "AND becomes OR / AND NOT / XOR for other ops. Returns a MaskCheck; assert check.ok.");

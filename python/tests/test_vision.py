@@ -96,13 +96,16 @@ def test_mask_checks(scene_gray, scene_contours, tags):
     _, contours, hierarchy = scene_contours
     subject = roiclip.from_contours(contours, hierarchy)
     roi = roiclip.convex_hull_of_tags(tags)
-    check = roiclip.check_roi_clip(subject, roi, scene_gray.shape)
+    inside = roiclip.intersect(subject, roi)
+    check = roiclip.check_roi_clip(subject, roi, inside, scene_gray.shape)
     assert check.ok and bool(check)
     assert check.vector_vs_raster.agrees_off_band and check.vector_vs_raster.iou > 0.999
     assert check.vector_vs_opencv is not None and check.vector_vs_opencv.agrees_off_band
-    assert check.clipped.area == pytest.approx(roiclip.intersect(subject, roi).area)
-    nonzero = roiclip.check_roi_clip(subject, roi, scene_gray.shape, "nonzero", "nonzero",
-                                     op="union")
+    # A wrong result fails: the union is not the intersection.
+    union = roiclip.union(subject, roi, "nonzero")
+    assert not roiclip.check_roi_clip(subject, roi, union, scene_gray.shape).ok
+    nonzero = roiclip.check_roi_clip(subject, roi, union, scene_gray.shape, "nonzero",
+                                     "nonzero", op="union")
     assert nonzero.ok and nonzero.vector_vs_opencv is None
 
     mask = roiclip.rasterize(subject, scene_gray.shape)
