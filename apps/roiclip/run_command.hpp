@@ -158,7 +158,7 @@ class RunCommand {
       options.writeMasks = masks_;
       options.writeReport = !noReport_;
       batch::RunOptions& p = options.process;
-      p.roi = roi_;
+      p.rois = {roi_};
       p.boardFile = board_;
       p.detector.family = family_;
       p.detector.quadDecimate = decimate_;

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <limits>
 #include <mutex>
 #include <sstream>
 #include <utility>
@@ -203,6 +204,70 @@ struct Detector::Impl {
     }
   }
 
+  // One libapriltag pass with quads searched on the image decimated by `decimateBy`.
+  DetectionReport detectAt(const cv::Mat& image, float decimateBy) {
+    // libapriltag 3.3 crashes (out-of-bounds read in apriltag_quad_thresh) on images whose
+    // decimated height is below 3 rows (1x1, 100x2, 100x4 at decimate 2, ...). No tag fits in
+    // so few pixels anyway.
+    DetectionReport report;
+    report.quadDecimate = decimateBy;
+    const int decimate = std::max(1, static_cast<int>(std::ceil(report.quadDecimate)));
+    if (std::min(image.rows, image.cols) < 3 * decimate) return report;
+
+    cv::Mat gray;
+    if (image.channels() == 3) {
+      cv::cvtColor(image, gray, cv::COLOR_BGR2GRAY);
+    } else if (image.channels() == 4) {
+      cv::cvtColor(image, gray, cv::COLOR_BGRA2GRAY);
+    } else if (options.quadSigma != 0.0f && report.quadDecimate <= 1.0f) {
+      // Without decimation libapriltag blurs (or sharpens) the input buffer in place.
+      gray = image.clone();
+    } else {
+      gray = image;  // shared, no copy: libapriltag only reads it
+    }
+
+    // Wrap the Mat's buffer; `stride` is the row step so ROI views work without a copy.
+    image_u8_t wrapped{gray.cols, gray.rows, static_cast<int32_t>(gray.step[0]), gray.data};
+
+    std::vector<Detection> result;
+    {
+      std::lock_guard<std::mutex> lock(mutex);
+      detector->quad_decimate = report.quadDecimate;
+      std::unique_ptr<zarray_t, DetectionsDeleter> found(
+          apriltag_detector_detect(detector.get(), &wrapped));
+      if (!found) throw Error("apriltag_detector_detect failed");
+      const int count = zarray_size(found.get());
+      result.reserve(static_cast<size_t>(count));
+      for (int i = 0; i < count; ++i) {
+        apriltag_detection_t* det = nullptr;
+        zarray_get(found.get(), i, &det);
+        Detection d;
+        d.id = det->id;
+        d.family = det->family->name;
+        d.hamming = det->hamming;
+        d.decisionMargin = det->decision_margin;
+        d.centre = {det->c[0] + kAprilTagToOpenCv, det->c[1] + kAprilTagToOpenCv};
+        for (int k = 0; k < 4; ++k) {
+          d.corners[k] = {det->p[k][0] + kAprilTagToOpenCv, det->p[k][1] + kAprilTagToOpenCv};
+        }
+        result.push_back(std::move(d));
+      }
+    }
+    const auto byId = [](const Detection& a, const Detection& b) {
+      return a.id != b.id ? a.id < b.id : a.centre.x < b.centre.x;
+    };
+    std::sort(result.begin(), result.end(), byId);
+    for (Detection& d : result) {
+      // Fit to the (shifted) corners in our tag frame rather than converting libapriltag's H, whose
+      // ideal frame is 2 units wide and in its pixel convention.
+      d.homography = detail::tagFrameHomography(d.corners);
+      const bool doubtful =
+          d.hamming > options.maxHamming || d.decisionMargin < options.minDecisionMargin;
+      (doubtful ? report.rejected : report.tags).push_back(std::move(d));
+    }
+    return report;
+  }
+
   DetectorOptions options;
   // Declaration order matters: members are destroyed in reverse, so the detector (whose destroy
   // function still walks its families' decode tables) goes before the families it uses.
@@ -244,67 +309,24 @@ DetectionReport Detector::detectReport(cv::InputArray input, float quadDecimate)
         matTypeName(image));
   }
 
-  // libapriltag 3.3 crashes (out-of-bounds read in apriltag_quad_thresh) on images whose
-  // decimated height is below 3 rows (1x1, 100x2, 100x4 at decimate 2, ...). No tag fits in
-  // so few pixels anyway.
-  DetectionReport report;
-  report.quadDecimate = quadDecimate > 0 ? quadDecimate
-                        : impl_->options.quadDecimate > 0
-                            ? impl_->options.quadDecimate
-                            : autoQuadDecimate(image.cols, image.rows);
-  const int decimate = std::max(1, static_cast<int>(std::ceil(report.quadDecimate)));
-  if (std::min(image.rows, image.cols) < 3 * decimate) return report;
-
-  cv::Mat gray;
-  if (image.channels() == 3) {
-    cv::cvtColor(image, gray, cv::COLOR_BGR2GRAY);
-  } else if (image.channels() == 4) {
-    cv::cvtColor(image, gray, cv::COLOR_BGRA2GRAY);
-  } else if (impl_->options.quadSigma != 0.0f && report.quadDecimate <= 1.0f) {
-    // Without decimation libapriltag blurs (or sharpens) the input buffer in place.
-    gray = image.clone();
-  } else {
-    gray = image;  // shared, no copy: libapriltag only reads it
-  }
-
-  // Wrap the Mat's buffer; `stride` is the row step so ROI views work without a copy.
-  image_u8_t wrapped{gray.cols, gray.rows, static_cast<int32_t>(gray.step[0]), gray.data};
-
-  std::vector<Detection> result;
-  {
-    std::lock_guard<std::mutex> lock(impl_->mutex);
-    impl_->detector->quad_decimate = report.quadDecimate;
-    std::unique_ptr<zarray_t, DetectionsDeleter> found(
-        apriltag_detector_detect(impl_->detector.get(), &wrapped));
-    if (!found) throw Error("apriltag_detector_detect failed");
-    const int count = zarray_size(found.get());
-    result.reserve(static_cast<size_t>(count));
-    for (int i = 0; i < count; ++i) {
-      apriltag_detection_t* det = nullptr;
-      zarray_get(found.get(), i, &det);
-      Detection d;
-      d.id = det->id;
-      d.family = det->family->name;
-      d.hamming = det->hamming;
-      d.decisionMargin = det->decision_margin;
-      d.centre = {det->c[0] + kAprilTagToOpenCv, det->c[1] + kAprilTagToOpenCv};
+  const bool automatic = quadDecimate == 0.0f && impl_->options.quadDecimate == 0.0f;
+  const float decimateBy = quadDecimate > 0 ? quadDecimate
+                           : impl_->options.quadDecimate > 0
+                               ? impl_->options.quadDecimate
+                               : autoQuadDecimate(image.cols, image.rows);
+  DetectionReport report = impl_->detectAt(image, decimateBy);
+  if (automatic && decimateBy > 1.0f) {
+    // Small tags may be lost on the decimated image: when none was found, or the smallest found
+    // is near the size where quads stop being found, look again at full resolution.
+    double smallest = std::numeric_limits<double>::infinity();
+    for (const Detection& d : report.tags) {
       for (int k = 0; k < 4; ++k) {
-        d.corners[k] = {det->p[k][0] + kAprilTagToOpenCv, det->p[k][1] + kAprilTagToOpenCv};
+        smallest = std::min(smallest, glm::length(d.corners[(k + 1) % 4] - d.corners[k]));
       }
-      result.push_back(std::move(d));
     }
-  }
-  const auto byId = [](const Detection& a, const Detection& b) {
-    return a.id != b.id ? a.id < b.id : a.centre.x < b.centre.x;
-  };
-  std::sort(result.begin(), result.end(), byId);
-  for (Detection& d : result) {
-    // Fit to the (shifted) corners in our tag frame rather than converting libapriltag's H, whose
-    // ideal frame is 2 units wide and in its pixel convention.
-    d.homography = detail::tagFrameHomography(d.corners);
-    const bool doubtful = d.hamming > impl_->options.maxHamming ||
-                          d.decisionMargin < impl_->options.minDecisionMargin;
-    (doubtful ? report.rejected : report.tags).push_back(std::move(d));
+    if (report.tags.empty() || smallest / decimateBy < kAutoDecimateMinTagSide) {
+      report = impl_->detectAt(image, 1.0f);
+    }
   }
   return report;
 }

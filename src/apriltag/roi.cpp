@@ -51,6 +51,22 @@ RoiResult polygonThroughTags(const std::vector<Detection>& detections, const std
   return Paths{std::move(path)};
 }
 
+RoiResult polygonThroughTags(const std::vector<Detection>& detections, const std::vector<int>& ids,
+                             const std::vector<TagAnchor>& anchors) {
+  if (anchors.size() != ids.size()) {
+    throw InvalidInputError("tag polygon: " + std::to_string(anchors.size()) + " anchors for " +
+                            std::to_string(ids.size()) + " tag ids");
+  }
+  const RoiResult through = polygonThroughTags(detections, ids, TagAnchor::Centre);
+  if (!through) return through;
+  const Lookup lookup(detections, ids, static_cast<int>(ids.size()));
+  Path path;
+  for (std::size_t i = 0; i < ids.size(); ++i) {
+    path.push_back(anchorPoint(lookup.get(ids[i]), anchors[i]));
+  }
+  return Paths{std::move(path)};
+}
+
 RoiResult convexHullOfTags(const std::vector<Detection>& detections, const std::vector<int>& ids) {
   std::vector<cv::Point2d> points;
   if (ids.empty()) {
@@ -91,7 +107,7 @@ RoiResult buildRoi(const RoiSpec& spec, const std::vector<Detection>& detections
                    const Board* board) {
   switch (spec.kind) {
     case RoiSpec::Kind::Tags:
-      return polygonThroughTags(detections, spec.ids, spec.anchor);
+      return polygonThroughTags(detections, spec.ids, spec.anchors);
     case RoiSpec::Kind::Hull:
       return convexHullOfTags(detections, spec.ids);
     case RoiSpec::Kind::Board:

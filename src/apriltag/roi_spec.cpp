@@ -1,6 +1,7 @@
 // ROI specs as a command line gives them (`--roi tags:0,1,2,3@top-left`).
 #include <roiclip/apriltag/roi.hpp>
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <string>
@@ -81,9 +82,19 @@ RoiSpec parseRoiSpec(const std::string& text) {
     spec.kind = RoiSpec::Kind::Tags;
     if (!hasArgument)
       throw InvalidInputError("ROI '" + text + "': expected tags:ID,ID,ID[@anchor]");
-    const std::size_t at = rest.find('@');
-    spec.ids = parseIds(rest.substr(0, at), text);
-    if (at != std::string::npos) spec.anchor = parseTagAnchor(rest.substr(at + 1));
+    // Each id may carry its own anchor (22@top-left); one anchor on the last id alone applies
+    // to every tag (the older form tags:0,1,2,3@top-left).
+    int anchored = 0;
+    for (const std::string& part : split(rest, ',')) {
+      const std::size_t at = part.find('@');
+      spec.ids.push_back(parseId(part.substr(0, at), text));
+      spec.anchors.push_back(at == std::string::npos ? TagAnchor::Centre
+                                                     : parseTagAnchor(part.substr(at + 1)));
+      if (at != std::string::npos) ++anchored;
+    }
+    if (anchored == 1 && rest.find('@') > rest.rfind(',')) {
+      spec.anchors.assign(spec.ids.size(), spec.anchors.back());
+    }
     if (spec.ids.size() < 3)
       throw InvalidInputError("ROI '" + text + "': a tag polygon needs at least 3 ids");
   } else if (kind == "hull") {
@@ -114,6 +125,13 @@ RoiSpec parseRoiSpec(const std::string& text) {
   } else {
     throw InvalidInputError("ROI '" + text + "': unknown kind '" + kind +
                             "' (expected tags:, hull, board or tag:)");
+  }
+  std::vector<int> sorted = spec.ids;
+  std::sort(sorted.begin(), sorted.end());
+  const auto twice = std::adjacent_find(sorted.begin(), sorted.end());
+  if (twice != sorted.end()) {
+    throw InvalidInputError("ROI '" + text + "': tag id " + std::to_string(*twice) +
+                            " is listed twice");
   }
   return spec;
 }

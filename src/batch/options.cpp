@@ -106,15 +106,20 @@ std::string optionsKey(const RunOptions& o) {
   os.precision(17);
   const ContourOptions& c = o.contours;
   // Enums as numbers: the key of existing outputs must not change when a name is reworded.
-  os << "roi=" << o.roi << ";board=" << o.boardFile << ";family=" << o.detector.family
-     << ";decimate=" << o.detector.quadDecimate << ";sigma=" << o.detector.quadSigma
-     << ";refine=" << o.detector.refineEdges << ";sharpen=" << o.detector.decodeSharpening
-     << ";bits=" << o.detector.maxBitsCorrected << ";method=" << static_cast<int>(c.method)
-     << ";polarity=" << static_cast<int>(c.polarity) << ";threshold=" << c.threshold
-     << ";block=" << c.adaptiveBlock << ";c=" << c.adaptiveC << ";canny=" << c.cannyLow << ","
-     << c.cannyHigh << ";approx=" << c.approxEpsilon << ";min_area=" << c.minArea
-     << ";edges=" << c.openEdges << ";fill=" << toString(o.subjectFillRule)
-     << ";roi_fill=" << toString(o.roiFillRule) << ";grid=" << o.grid.scale;
+  std::string rois;
+  for (const std::string& roi : o.rois) rois += (rois.empty() ? "" : "|") + roi;
+  os << "roi=" << rois << ";tags=" << (o.keepTags ? "kept" : "excluded")
+     << ",margin=" << o.tagMargin << ";hamming=" << o.detector.maxHamming
+     << ";margin=" << o.detector.minDecisionMargin << ";board=" << o.boardFile
+     << ";family=" << o.detector.family << ";decimate=" << o.detector.quadDecimate
+     << ";sigma=" << o.detector.quadSigma << ";refine=" << o.detector.refineEdges
+     << ";sharpen=" << o.detector.decodeSharpening << ";bits=" << o.detector.maxBitsCorrected
+     << ";method=" << static_cast<int>(c.method) << ";polarity=" << static_cast<int>(c.polarity)
+     << ";threshold=" << c.threshold << ";block=" << c.adaptiveBlock << ";c=" << c.adaptiveC
+     << ";canny=" << c.cannyLow << "," << c.cannyHigh << ";approx=" << c.approxEpsilon
+     << ";min_area=" << c.minArea << ";edges=" << c.openEdges
+     << ";fill=" << toString(o.subjectFillRule) << ";roi_fill=" << toString(o.roiFillRule)
+     << ";grid=" << o.grid.scale;
   return os.str();
 }
 

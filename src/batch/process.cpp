@@ -1,14 +1,20 @@
 // The per-image pipeline: tags -> ROI -> contours -> exact clip -> mask check.
 //
-// Core calls per image with N contours kept: one simplify of the ROI (its area), per contour
-// one simplify (its input area under the fill rule, which self-intersecting approxPolyDP
-// contours need) and one clip (its part inside the ROI), and one clip of all contours together
+// The region: every ROI spec built from the tags and simplified under the ROI fill rule (one
+// simplify each), their union when there are several (one more), minus the tag quads (one
+// difference, unless tags are kept). Then per contour with N contours kept: one simplify (its
+// input area under the fill rule, which self-intersecting approxPolyDP contours need) and one
+// clip (its part inside the region), and one clip of all contours together
 // (ImageResult::clipped, whose polygon parents link an island to the hole of another contour it
 // lies in; concatenating the per-contour results would lose that), checked by the mask check
-// without clipping again: 2N + 2, plus one clipLines with openEdges.
+// without clipping again. One ROI: 2N + 3 calls (2N + 2 with tags kept), plus one clipLines with
+// openEdges; with R > 1 ROIs, R + 2 for the region and R more per contour inside it (per-ROI
+// figures).
 #include <roiclip/batch/process.hpp>
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdint>
 #include <new>
 #include <utility>
@@ -31,19 +37,106 @@ double secondsSince(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
+// A convex tag quad grown outwards by `margin` px: every edge moved along its normal, corners
+// where the moved edges meet. Oriented like an outer ring (negative shoelace sum), so that the
+// quads of overlapping tags add up under the non-zero rule.
+Path grownQuad(const apriltag::Detection& tag, double margin) {
+  Path quad(tag.corners.begin(), tag.corners.end());
+  if (signedArea(quad) > 0) std::reverse(quad.begin(), quad.end());
+  if (margin <= 0) return quad;
+  const std::size_t n = quad.size();
+  std::vector<glm::dvec2> normals(n);  // outward for a negative shoelace sum in x/y numbers
+  for (std::size_t i = 0; i < n; ++i) {
+    const glm::dvec2 d = quad[(i + 1) % n] - quad[i];
+    const double length = glm::length(d);
+    normals[i] = length > 0 ? glm::dvec2{-d.y, d.x} / length : glm::dvec2{0, 0};
+  }
+  Path grown(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    // Corner i joins edge i-1 and edge i: offset = m (n1 + n2) / (1 + n1.n2).
+    const glm::dvec2 a = normals[(i + n - 1) % n];
+    const glm::dvec2 b = normals[i];
+    const double cosine = glm::dot(a, b);
+    grown[i] = quad[i] + (cosine > -0.99 ? margin * (a + b) / (1 + cosine) : margin * b);
+  }
+  return grown;
+}
+
+// "board" without a name stands for every ROI of the board, each its own region.
+std::vector<std::pair<std::string, apriltag::RoiSpec>> expandSpecs(
+    const std::vector<std::string>& texts, const std::optional<apriltag::Board>& board) {
+  std::vector<std::pair<std::string, apriltag::RoiSpec>> out;
+  for (const std::string& text : texts) {
+    apriltag::RoiSpec spec = apriltag::parseRoiSpec(text);
+    if (spec.kind == apriltag::RoiSpec::Kind::Board && spec.roiName.empty()) {
+      if (board->rois.empty()) throw InvalidInputError("board file has no ROIs");
+      for (const apriltag::BoardRoi& roi : board->rois) {
+        apriltag::RoiSpec one = spec;
+        one.roiName = roi.name;
+        out.emplace_back(roi.name, std::move(one));
+      }
+    } else if (spec.kind == apriltag::RoiSpec::Kind::Board) {
+      (void)board->roi(spec.roiName);  // refuses an unknown name up front
+      out.emplace_back(spec.roiName, std::move(spec));
+    } else {
+      out.emplace_back(text, std::move(spec));
+    }
+  }
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    for (std::size_t k = 0; k < i; ++k) {
+      if (out[i].first == out[k].first) {
+        throw InvalidInputError("ROI '" + out[i].first + "' is given twice");
+      }
+    }
+  }
+  return out;
+}
+
+// Ids a spec names that no detector family has, refused before any image is read.
+void checkIds(const std::pair<std::string, apriltag::RoiSpec>& spec,
+              const apriltag::DetectorOptions& detector) {
+  int largest = 0;
+  std::size_t start = 0;
+  const std::string& families = detector.family;
+  while (true) {
+    const std::size_t end = families.find(',', start);
+    largest = std::max(largest, apriltag::familySize(families.substr(
+                                    start, end == std::string::npos ? end : end - start)));
+    if (end == std::string::npos) break;
+    start = end + 1;
+  }
+  for (int id : spec.second.ids) {
+    if (id >= largest) {
+      throw InvalidInputError("ROI '" + spec.first + "': tag id " + std::to_string(id) +
+                              " does not exist in " + families + " (ids 0.." +
+                              std::to_string(largest - 1) + ")");
+    }
+  }
+}
+
+std::optional<apriltag::Board> loadBoard(const RunOptions& o) {
+  for (const std::string& text : o.rois) {
+    if (apriltag::parseRoiSpec(text).kind != apriltag::RoiSpec::Kind::Board) continue;
+    if (o.boardFile.empty()) {
+      throw InvalidInputError("ROI spec '" + text + "' needs a board file (--board)");
+    }
+    return apriltag::Board::load(o.boardFile);
+  }
+  return std::nullopt;
+}
+
 // The pipeline's stages, in order; every core call goes through `calls`.
 class Pipeline {
  public:
   explicit Pipeline(RunOptions o)
-      : options_(std::move(o)),
-        detector_(options_.detector),
-        spec_(apriltag::parseRoiSpec(options_.roi)) {
-    if (spec_.kind == apriltag::RoiSpec::Kind::Board) {
-      if (options_.boardFile.empty()) {
-        throw InvalidInputError("ROI spec '" + options_.roi + "' needs a board file (--board)");
-      }
-      board_ = apriltag::Board::load(options_.boardFile);
+      : options_(std::move(o)), detector_(options_.detector), board_(loadBoard(options_)) {
+    if (options_.rois.empty()) throw InvalidInputError("no ROI given");
+    if (!(options_.tagMargin >= 0) || !std::isfinite(options_.tagMargin)) {
+      throw InvalidInputError("tag margin must be a finite number >= 0, got " +
+                              std::to_string(options_.tagMargin));
     }
+    specs_ = expandSpecs(options_.rois, board_);
+    for (const auto& spec : specs_) checkIds(spec, options_.detector);
   }
 
   [[nodiscard]] const RunOptions& options() const { return options_; }
@@ -77,30 +170,88 @@ class Pipeline {
 
   void detectTags(const cv::Mat& gray, ImageResult& r) const {
     const auto t = Clock::now();
-    r.tags = detector_.detect(gray);
+    apriltag::DetectionReport found = detector_.detectReport(gray);
+    r.tags = std::move(found.tags);
+    r.rejectedTags = std::move(found.rejected);
+    r.quadDecimate = found.quadDecimate;
     r.seconds.detect = secondsSince(t);
   }
 
-  // False (Status::NoRoi) when the tags the spec needs are not there.
+  // False (Status::NoRoi) when the tags a spec needs are not there.
   bool buildRoi(ImageResult& r, detail::CoreCalls& calls) const {
     const auto t = Clock::now();
-    const apriltag::RoiResult roi = apriltag::buildRoi(spec_, r.tags, board_ ? &*board_ : nullptr);
-    r.seconds.roi = secondsSince(t);
-    if (!roi) {
-      r.status = Status::NoRoi;
-      r.missingTags = roi.missing();
-      if (r.tags.empty()) {
-        r.failure = FailureKind::NoTags;
-        r.reason = "no " + options_.detector.family + " tags detected";
-      } else {
-        r.failure = FailureKind::MissingTags;
-        r.reason = "ROI '" + options_.roi + "': " + roi.missing().describe();
+    r.rois.clear();
+    r.excludedTags.clear();
+    r.missingTags.reset();
+    for (const auto& [name, spec] : specs_) {
+      const apriltag::RoiResult roi = apriltag::buildRoi(spec, r.tags, board_ ? &*board_ : nullptr);
+      if (!roi) {
+        r.status = Status::NoRoi;
+        r.missingTags = roi.missing();
+        if (r.tags.empty()) {
+          r.failure = FailureKind::NoTags;
+          r.reason = "no " + options_.detector.family + " tags detected";
+          if (!r.rejectedTags.empty()) {
+            r.reason += " (" + std::to_string(r.rejectedTags.size()) +
+                        " doubtful detections rejected: --max-hamming, --min-margin)";
+          }
+        } else {
+          r.failure = FailureKind::MissingTags;
+          r.reason = "ROI '" + name + "': " + roi.missing().describe();
+        }
+        r.rois.clear();
+        r.seconds.roi = secondsSince(t);
+        return false;
       }
-      return false;
+      RoiRegion region;
+      region.name = name;
+      region.paths = roi.value();
+      ++calls.simplify;
+      const PolygonSet simple = simplify(region.paths, options_.roiFillRule, options_.grid);
+      region.region = simple.toPaths();
+      region.area = simple.area();
+      r.rois.push_back(std::move(region));
     }
-    r.roi = roi.value();
-    ++calls.simplify;
-    r.roiArea = simplify(r.roi, options_.roiFillRule, options_.grid).area();
+    Paths all = r.rois[0].region;
+    double allArea = r.rois[0].area;
+    if (r.rois.size() > 1) {  // the union: simple rings of one orientation add up
+      for (std::size_t i = 1; i < r.rois.size(); ++i) {
+        all.insert(all.end(), r.rois[i].region.begin(), r.rois[i].region.end());
+      }
+      ++calls.simplify;
+      const PolygonSet united = simplify(all, FillRule::NonZero, options_.grid);
+      all = united.toPaths();
+      allArea = united.area();
+    }
+    if (!options_.keepTags) {
+      for (const apriltag::Detection& tag : r.tags) {
+        r.excludedTags.push_back(grownQuad(tag, options_.tagMargin));
+      }
+    }
+    if (!r.excludedTags.empty()) {
+      const auto minusTags = [&](const Paths& region) {
+        ++calls.clip;
+        return clip(ClipOp::Difference, region, r.excludedTags, FillRule::EvenOdd,
+                    FillRule::NonZero, options_.grid);
+      };
+      const PolygonSet region = minusTags(all);
+      r.roi = region.toPaths();
+      r.roiArea = region.area();
+      if (r.rois.size() == 1) {
+        r.rois[0].region = r.roi;
+        r.rois[0].area = r.roiArea;
+      } else {
+        for (RoiRegion& one : r.rois) {
+          const PolygonSet part = minusTags(one.region);
+          one.region = part.toPaths();
+          one.area = part.area();
+        }
+      }
+    } else {
+      r.roi = std::move(all);
+      r.roiArea = allArea;
+    }
+    r.seconds.roi = secondsSince(t);
     return true;
   }
 
@@ -127,8 +278,19 @@ class Pipeline {
       c.inputArea = simplify(c.input, rule, options_.grid).area();
       ++calls.clip;
       c.clipped =
-          clip(ClipOp::Intersection, c.input, r.roi, rule, options_.roiFillRule, options_.grid);
+          clip(ClipOp::Intersection, c.input, r.roi, rule, FillRule::EvenOdd, options_.grid);
       c.clippedArea = c.clipped.area();
+      if (r.rois.size() > 1 && !c.clipped.empty()) {
+        const Paths inside = c.clipped.toPaths();
+        for (RoiRegion& one : r.rois) {
+          ++calls.clip;
+          const double area = clip(ClipOp::Intersection, inside, one.region, FillRule::EvenOdd,
+                                   FillRule::EvenOdd, options_.grid)
+                                  .area();
+          if (area > 0) ++one.contoursOut;
+          one.clippedArea += area;
+        }
+      }
       r.holesIn += static_cast<int>(c.input.size()) - 1;
       if (!c.clipped.empty()) ++r.contoursOut;
       r.contourClippedAreaSum += c.clippedArea;
@@ -137,8 +299,12 @@ class Pipeline {
     }
     r.contoursIn = static_cast<int>(r.contours.size());
     ++calls.clip;
-    r.clipped = clip(ClipOp::Intersection, all, r.roi, rule, options_.roiFillRule, options_.grid);
+    r.clipped = clip(ClipOp::Intersection, all, r.roi, rule, FillRule::EvenOdd, options_.grid);
     r.clippedArea = r.clipped.area();
+    if (r.rois.size() == 1) {
+      r.rois[0].contoursOut = r.contoursOut;
+      r.rois[0].clippedArea = r.clippedArea;
+    }
     r.seconds.clip = secondsSince(t);
     return all;
   }
@@ -152,7 +318,7 @@ class Pipeline {
     if (c.approxEpsilon > 0) opencv::approximatePolylines(lines, c.approxEpsilon);
     r.edgesIn = static_cast<int>(lines.size());
     ++calls.clipLines;
-    r.edges = clipLines(lines, r.roi, options_.roiFillRule, LinePart::Inside, options_.grid);
+    r.edges = clipLines(lines, r.roi, FillRule::EvenOdd, LinePart::Inside, options_.grid);
     r.edgeLength = opencv::polylineLength(r.edges);
     r.seconds.clip += secondsSince(t);
   }
@@ -162,8 +328,8 @@ class Pipeline {
     opencv::MaskCheckOptions checkOptions;
     checkOptions.grid = options_.grid;
     const opencv::MaskCheck check =
-        opencv::checkRoiClip(subject, r.roi, r.clipped, options_.subjectFillRule,
-                             options_.roiFillRule, cv::Size(r.width, r.height), checkOptions);
+        opencv::checkRoiClip(subject, r.roi, r.clipped, options_.subjectFillRule, FillRule::EvenOdd,
+                             cv::Size(r.width, r.height), checkOptions);
     r.seconds.check = secondsSince(t);
     r.vectorVsRaster = check.vectorVsRaster;
     r.vectorVsOpenCv = check.vectorVsOpenCv;
@@ -180,8 +346,8 @@ class Pipeline {
 
   RunOptions options_;
   apriltag::Detector detector_;
-  apriltag::RoiSpec spec_;
   std::optional<apriltag::Board> board_;
+  std::vector<std::pair<std::string, apriltag::RoiSpec>> specs_;  // name, spec
 };
 
 // Pipeline::run with per-image problems turned into Status::Failed.

@@ -11,6 +11,12 @@ namespace roiclip::batch::detail {
 
 namespace {
 
+std::string roiList(const RunOptions& options) {
+  std::string out;
+  for (const std::string& roi : options.rois) out += (out.empty() ? "" : " + ") + roi;
+  return out;
+}
+
 using Json = nlohmann::json;
 
 std::string csvField(const std::string& s) {
@@ -73,17 +79,26 @@ std::string fmt(double v, int precision) {
 
 const char* const kSummaryColumns =
     "image,status,failure,reason,skipped,width,height,tags_found,roi_area,contours_in,"
-    "contours_out,clipped_area,iou,off_band_mismatches,seconds";
+    "contours_out,clipped_area,iou,off_band_mismatches,seconds,roi,tags_rejected";
 
 std::string summaryCsv(const RunSummary& summary) {
   std::ostringstream os;
   os << kSummaryColumns << "\n";
   for (const auto& r : summary.images) {
-    os << csvField(r.image) << ',' << toString(r.status) << ',' << toString(r.failure) << ','
-       << csvField(r.reason) << ',' << (r.skipped ? 1 : 0) << ',' << r.width << ',' << r.height
-       << ',' << r.tagsFound << ',' << fmt(r.roiArea, 3) << ',' << r.contoursIn << ','
-       << r.contoursOut << ',' << fmt(r.clippedArea, 3) << ',' << fmt(r.iou, 6) << ','
-       << r.offBandMismatches << ',' << fmt(r.seconds, 4) << "\n";
+    // One row per image and ROI: with several ROIs each row has that ROI's figures.
+    std::vector<RoiRecord> rows = r.rois;
+    if (rows.size() <= 1) {
+      rows.assign(1, {rows.empty() ? std::string() : rows[0].name, r.roiArea, r.contoursOut,
+                      r.clippedArea});
+    }
+    for (const RoiRecord& roi : rows) {
+      os << csvField(r.image) << ',' << toString(r.status) << ',' << toString(r.failure) << ','
+         << csvField(r.reason) << ',' << (r.skipped ? 1 : 0) << ',' << r.width << ',' << r.height
+         << ',' << r.tagsFound << ',' << fmt(roi.roiArea, 3) << ',' << r.contoursIn << ','
+         << roi.contoursOut << ',' << fmt(roi.clippedArea, 3) << ',' << fmt(r.iou, 6) << ','
+         << r.offBandMismatches << ',' << fmt(r.seconds, 4) << ',' << csvField(roi.name) << ','
+         << r.tagsRejected << "\n";
+    }
   }
   return os.str();
 }
@@ -91,6 +106,13 @@ std::string summaryCsv(const RunSummary& summary) {
 std::string summaryJson(const RunSummary& summary, const BatchOptions& options) {
   Json rows = Json::array();
   for (const auto& r : summary.images) {
+    Json rois = Json::array();
+    for (const RoiRecord& roi : r.rois) {
+      rois.push_back({{"name", roi.name},
+                      {"roi_area", roi.roiArea},
+                      {"contours_out", roi.contoursOut},
+                      {"clipped_area", roi.clippedArea}});
+    }
     rows.push_back({{"image", r.image},
                     {"name", r.name},
                     {"status", toString(r.status)},
@@ -100,6 +122,8 @@ std::string summaryJson(const RunSummary& summary, const BatchOptions& options) 
                     {"width", r.width},
                     {"height", r.height},
                     {"tags_found", r.tagsFound},
+                    {"tags_rejected", r.tagsRejected},
+                    {"rois", std::move(rois)},
                     {"roi_area", r.roiArea},
                     {"contours_in", r.contoursIn},
                     {"contours_out", r.contoursOut},
@@ -112,7 +136,9 @@ std::string summaryJson(const RunSummary& summary, const BatchOptions& options) 
   Json j = {{"input", options.input.string()},
             {"output", options.output.string()},
             {"options",
-             {{"roi", p.roi},
+             {{"roi", p.rois},
+              {"keep_tags", p.keepTags},
+              {"tag_margin", p.tagMargin},
               {"board", p.boardFile},
               {"family", p.detector.family},
               {"method", toString(p.contours.method)},
@@ -144,7 +170,7 @@ std::string reportHtml(const RunSummary& summary, const BatchOptions& options) {
      << "table{border-collapse:collapse;font-size:90%}td,th{padding:.1em .5em;text-align:right}"
      << ".bad{color:#b00}</style></head><body>\n"
      << "<h1>roiclip run</h1>\n<p>Input <code>" << htmlEscape(options.input.string())
-     << "</code>, ROI <code>" << htmlEscape(options.process.roi) << "</code>, contours <code>"
+     << "</code>, ROI <code>" << htmlEscape(roiList(options.process)) << "</code>, contours <code>"
      << toString(options.process.contours.method) << "</code>, fill rule <code>"
      << toString(options.process.subjectFillRule) << "</code>. " << summary.images.size() << " of "
      << summary.total << " images: " << summary.ok << " ok, " << summary.noRoi << " no-roi, "

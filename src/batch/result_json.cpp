@@ -77,6 +77,19 @@ Json contoursJson(const std::vector<ContourResult>& contours) {
   return out;
 }
 
+Json roisJson(const std::vector<RoiRegion>& rois) {
+  Json out = Json::array();
+  for (const RoiRegion& roi : rois) {
+    out.push_back({{"name", roi.name},
+                   {"paths", pathsJson(roi.paths)},
+                   {"region", pathsJson(roi.region)},
+                   {"area", roi.area},
+                   {"contours_out", roi.contoursOut},
+                   {"clipped_area", roi.clippedArea}});
+  }
+  return out;
+}
+
 std::optional<ImageRecord> recordFromJson(const Json& j) {
   if (j.is_discarded() || !j.is_object()) return std::nullopt;
   try {
@@ -91,6 +104,11 @@ std::optional<ImageRecord> recordFromJson(const Json& j) {
     r.width = j.at("width").get<int>();
     r.height = j.at("height").get<int>();
     r.tagsFound = static_cast<int>(j.at("tags").size());
+    r.tagsRejected = static_cast<int>(j.at("rejected_tags").size());
+    for (const Json& roi : j.at("rois")) {
+      r.rois.push_back({roi.at("name").get<std::string>(), roi.at("area").get<double>(),
+                        roi.at("contours_out").get<int>(), roi.at("clipped_area").get<double>()});
+    }
     r.roiArea = j.at("roi").at("area").get<double>();
     r.contoursIn = j.at("contours_in").get<int>();
     r.contoursOut = j.at("contours_out").get<int>();
@@ -117,12 +135,16 @@ std::string resultToJson(const ImageResult& r, const std::string& imageName,
   j["width"] = r.width;
   j["height"] = r.height;
   j["tags"] = tagsJson(r.tags);
+  j["rejected_tags"] = tagsJson(r.rejectedTags);
+  j["quad_decimate"] = r.quadDecimate;
   if (r.missingTags) {
     j["missing_tags"] = {{"needed", r.missingTags->needed},
                          {"seen", r.missingTags->seen},
                          {"missing", r.missingTags->missing},
                          {"duplicated", r.missingTags->duplicated}};
   }
+  j["rois"] = roisJson(r.rois);
+  j["excluded_tags"] = pathsJson(r.excludedTags);
   j["roi"] = {{"paths", pathsJson(r.roi)}, {"area", r.roiArea}};
   j["contours_in"] = r.contoursIn;
   j["contours_out"] = r.contoursOut;
@@ -155,6 +177,10 @@ ImageRecord recordOf(const ImageResult& r) {
   rec.width = r.width;
   rec.height = r.height;
   rec.tagsFound = static_cast<int>(r.tags.size());
+  rec.tagsRejected = static_cast<int>(r.rejectedTags.size());
+  for (const RoiRegion& roi : r.rois) {
+    rec.rois.push_back({roi.name, roi.area, roi.contoursOut, roi.clippedArea});
+  }
   rec.roiArea = r.roiArea;
   rec.contoursIn = r.contoursIn;
   rec.contoursOut = r.contoursOut;

@@ -267,8 +267,15 @@ TEST(AprilTagRoiSpec, ParsesEveryKind) {
   const ra::RoiSpec tags = ra::parseRoiSpec("tags:0,2,1,3");
   EXPECT_EQ(tags.kind, ra::RoiSpec::Kind::Tags);
   EXPECT_EQ(tags.ids, (std::vector<int>{0, 2, 1, 3}));
-  EXPECT_EQ(tags.anchor, ra::TagAnchor::Centre);
-  EXPECT_EQ(ra::parseRoiSpec("tags:4,5,6@top-left").anchor, ra::TagAnchor::TopLeft);
+  using A = ra::TagAnchor;
+  EXPECT_EQ(tags.anchors, std::vector<A>(4, A::Centre));
+  // One anchor after the last id applies to every tag; otherwise each id has its own.
+  EXPECT_EQ(ra::parseRoiSpec("tags:4,5,6@top-left").anchors, std::vector<A>(3, A::TopLeft));
+  EXPECT_EQ(
+      ra::parseRoiSpec("tags:22@top-left,24@top-right,25@bottom-right,23@bottom-left").anchors,
+      (std::vector<A>{A::TopLeft, A::TopRight, A::BottomRight, A::BottomLeft}));
+  EXPECT_EQ(ra::parseRoiSpec("tags:4@top-left,5,6").anchors,
+            (std::vector<A>{A::TopLeft, A::Centre, A::Centre}));
   const ra::RoiSpec hull = ra::parseRoiSpec("hull");
   EXPECT_EQ(hull.kind, ra::RoiSpec::Kind::Hull);
   EXPECT_TRUE(hull.ids.empty());
@@ -295,6 +302,9 @@ TEST(AprilTagRoiSpec, RejectsBadText) {
   expectInvalid([] { (void)ra::parseRoiSpec("tag:5:0,0;1;1,1"); }, {"'1' is not x,y"});
   expectInvalid([] { (void)ra::parseRoiSpec("tag:5"); }, {"expected tag:ID:"});
   expectInvalid([] { (void)ra::parseRoiSpec("circle:3"); }, {"unknown kind 'circle'"});
+  expectInvalid([] { (void)ra::parseRoiSpec("tags:0,0,0"); }, {"tag id 0 is listed twice"});
+  expectInvalid([] { (void)ra::parseRoiSpec("hull:0,3,0"); }, {"tag id 0 is listed twice"});
+  expectInvalid([] { (void)ra::parseRoiSpec("tags:1@top-left,2@nowhere,3"); }, {"nowhere"});
   expectInvalid([] { (void)ra::buildRoi(ra::parseRoiSpec("board"), {}); }, {"board file"});
 }
 
@@ -318,6 +328,16 @@ TEST(AprilTagRoiSpec, BuildsTheSameAsTheBuilders) {
   EXPECT_EQ(ra::buildRoi(ra::parseRoiSpec("tag:1:0,0;1,0;1,1;0,1"), detections).value(),
             ra::tagFrameRoi(detections, 1, square).value());
   EXPECT_FALSE(ra::buildRoi(ra::parseRoiSpec("tags:0,1,7"), detections).ok());
+  // Per-tag corners: each vertex is that tag's own corner.
+  const roiclip::Paths corners =
+      ra::buildRoi(ra::parseRoiSpec("tags:0@top-left,1@bottom-right,2@top-right"), detections)
+          .value();
+  ASSERT_EQ(corners.size(), 1u);
+  EXPECT_EQ(corners[0], (roiclip::Path{detections[0].corner(ra::Corner::TopLeft),
+                                       detections[1].corner(ra::Corner::BottomRight),
+                                       detections[2].corner(ra::Corner::TopRight)}));
+  EXPECT_THROW((void)ra::polygonThroughTags(detections, {0, 1, 2}, std::vector<ra::TagAnchor>{ra::TagAnchor::TopLeft}),
+               roiclip::InvalidInputError);
 }
 
 }  // namespace

@@ -428,6 +428,30 @@ TEST(AprilTagCameraResolution, FindsEveryTagAtTheDefaults) {
               static_cast<double>(report.quadDecimate), worst);
 }
 
+// Small tags in a large image: scene_01 shrunk to 15% (tags about 18 px a side) in a 3840 x 2160
+// frame. The automatic decimation (4) loses them; the full-resolution second pass finds them all.
+TEST(AprilTagCameraResolution, SmallTagsInALargeImageAreFoundByTheSecondPass) {
+  const cv::Mat scene = cv::imread(kImages + "/scene_01.png", cv::IMREAD_GRAYSCALE);
+  ASSERT_FALSE(scene.empty());
+  cv::Mat small;
+  cv::resize(scene, small, cv::Size(), 0.15, 0.15, cv::INTER_AREA);
+  cv::Mat frame(2160, 3840, CV_8UC1, cv::Scalar(95));
+  small.copyTo(frame(cv::Rect(1600, 900, small.cols, small.rows)));
+  const ra::Detector detector;
+  EXPECT_TRUE(detector.detectReport(frame, 4.0f).tags.empty());  // what one pass would give
+  const ra::DetectionReport report = detector.detectReport(frame);
+  EXPECT_EQ(report.quadDecimate, 1.0f);
+  std::vector<int> ids;
+  for (const ra::Detection& d : report.tags) ids.push_back(d.id);
+  EXPECT_EQ(ids, (std::vector<int>{0, 1, 2, 3}));
+  // Large tags need no second pass.
+  cv::Mat big;
+  cv::resize(scene, big, cv::Size(), 2.7, 2.7, cv::INTER_LINEAR);
+  frame(cv::Rect(0, 0, big.cols, big.rows)).setTo(95);
+  big.copyTo(frame(cv::Rect(0, 0, big.cols, big.rows)));
+  EXPECT_EQ(detector.detectReport(frame).quadDecimate, 4.0f);
+}
+
 TEST_P(AprilTagScene, BoardRoi) {
   {
     SCOPED_TRACE("BoardRoiWithinOnePixel");

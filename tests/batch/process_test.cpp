@@ -102,7 +102,7 @@ TEST_P(BatchScene, BoardRoiAreasMatchGroundTruth) {
   rb::RunOptions options;
   options.boardFile = kImages + "/board.json";
   for (const std::string roiName : {"inspection", "window"}) {
-    options.roi = "board:" + roiName;
+    options.rois = {"board:" + roiName};
     const rb::ImageResult r = rb::processImage(image, options);
     ASSERT_EQ(r.status, rb::Status::Ok) << scene << " " << roiName << ": " << r.reason;
     EXPECT_EQ(r.offBandMismatches(), 0);
@@ -162,7 +162,19 @@ TEST_P(BatchScene, DefaultHullContainsEveryTagCorner) {
   cv::convexHull(pts, hull);
   const double hullArea = cv::contourArea(hull);
   const double hullPerimeter = cv::arcLength(hull, true);
-  EXPECT_NEAR(r.roiArea, hullArea, 0.25 * hullPerimeter);
+  // The region is the hull minus the tag quads (which lie inside it and do not overlap).
+  double tagsArea = 0, tagsPerimeter = 0;
+  for (const auto& c : corners) {
+    std::vector<cv::Point2f> quad;
+    for (const auto& p : c) quad.emplace_back(static_cast<float>(p.x), static_cast<float>(p.y));
+    tagsArea += std::abs(cv::contourArea(quad));
+    tagsPerimeter += cv::arcLength(quad, true);
+  }
+  EXPECT_NEAR(r.roiArea, hullArea - tagsArea, 0.25 * (hullPerimeter + tagsPerimeter));
+  ASSERT_EQ(r.rois.size(), 1u);
+  EXPECT_EQ(r.rois[0].name, "hull");
+  EXPECT_EQ(r.rois[0].area, r.roiArea);
+  EXPECT_EQ(r.excludedTags.size(), r.tags.size());
   // Every clipped vertex lies in the ROI's bounding box.
   const cv::Rect2f box = cv::boundingRect(hull);
   for (const auto& ring : r.clipped.toPaths()) {
@@ -247,7 +259,7 @@ TEST(BatchFailures, ImageWithoutTagsIsNoRoi) {
 TEST(BatchFailures, MissingRequiredIdIsNoRoiNamingTheId) {
   const cv::Mat image = cv::imread(kImages + "/scene_03.png", cv::IMREAD_GRAYSCALE);
   rb::RunOptions options;
-  options.roi = "tags:0,1,2,9";
+  options.rois = {"tags:0,1,2,9"};
   const rb::ImageResult r = rb::processImage(image, options);
   EXPECT_EQ(r.status, rb::Status::NoRoi);
   EXPECT_EQ(r.failure, rb::FailureKind::MissingTags);
@@ -260,10 +272,10 @@ TEST(BatchFailures, MissingRequiredIdIsNoRoiNamingTheId) {
 TEST(BatchFailures, BadOptionsAreFailedInvalidInput) {
   const cv::Mat image = cv::imread(kImages + "/scene_03.png", cv::IMREAD_GRAYSCALE);
   rb::RunOptions badSpec;
-  badSpec.roi = "polygon:1,2";
+  badSpec.rois = {"polygon:1,2"};
   EXPECT_EQ(rb::processImage(image, badSpec).failure, rb::FailureKind::InvalidInput);
   rb::RunOptions noBoard;
-  noBoard.roi = "board:inspection";
+  noBoard.rois = {"board:inspection"};
   const rb::ImageResult r = rb::processImage(image, noBoard);
   EXPECT_EQ(r.status, rb::Status::Failed);
   EXPECT_NE(r.reason.find("--board"), std::string::npos) << r.reason;
@@ -352,7 +364,7 @@ namespace {
 TEST(BatchEdges, SceneEdgesAreClippedToTheRoi) {
   const cv::Mat image = cv::imread(kImages + "/scene_01.png", cv::IMREAD_GRAYSCALE);
   rb::RunOptions options;
-  options.roi = "board:window";
+  options.rois = {"board:window"};
   options.boardFile = kImages + "/board.json";
   options.contours.openEdges = true;
   const rb::ImageResult r = rb::processImage(image, options);
@@ -380,6 +392,7 @@ TEST(BatchEdges, ApproxEpsilonAlsoSimplifiesTheEdges) {
   const cv::Mat image = cv::imread(kImages + "/scene_01.png", cv::IMREAD_GRAYSCALE);
   rb::RunOptions options;
   options.contours.openEdges = true;
+  options.keepTags = true;  // the tags' dense edges, as when this was measured
   const rb::ImageResult exact = rb::processImage(image, options);
   options.contours.approxEpsilon = 1.5;
   const rb::ImageResult approx = rb::processImage(image, options);
@@ -394,9 +407,12 @@ TEST(BatchEdges, ApproxEpsilonAlsoSimplifiesTheEdges) {
 
 // --- core calls per image --------------------------------------------------------------------
 
-TEST(BatchCoreCalls, TwoPerContourPlusTwoAndTheMaskCheckDoesNotClip) {
-  // One simplify of the ROI; per contour one simplify (input area) and one clip; one clip of
-  // all contours together, which the mask check takes as it is: 2N + 2 for N contours.
+TEST(BatchCoreCalls, TwoPerContourPlusThreeAndTheMaskCheckDoesNotClip) {
+  // One simplify of the ROI and one difference taking the tags out; per contour one simplify
+  // (input area) and one clip; one clip of all contours together, which the mask check takes
+  // as it is: 2N + 3 for N contours, 2N + 2 with the tags kept.
+  rb::RunOptions keep = kDefaults;
+  keep.keepTags = true;
   for (const char* scene : {"scene_01", "scene_04", "scene_07"}) {
     const cv::Mat image = cv::imread(kImages + "/" + scene + ".png", cv::IMREAD_GRAYSCALE);
     rb::detail::CoreCalls calls;
@@ -405,9 +421,13 @@ TEST(BatchCoreCalls, TwoPerContourPlusTwoAndTheMaskCheckDoesNotClip) {
     const int n = r.contoursIn;
     ASSERT_GT(n, 0) << scene;
     EXPECT_EQ(calls.simplify, 1 + n) << scene;
-    EXPECT_EQ(calls.clip, n + 1) << scene;
+    EXPECT_EQ(calls.clip, n + 2) << scene;
     EXPECT_EQ(calls.clipLines, 0) << scene;
-    EXPECT_EQ(calls.total(), 2 * n + 2) << scene;
+    EXPECT_EQ(calls.total(), 2 * n + 3) << scene;
+    rb::detail::CoreCalls kept;
+    const rb::ImageResult k = rb::detail::processCountingCoreCalls(image, keep, kept);
+    ASSERT_EQ(k.status, rb::Status::Ok) << scene << ": " << k.reason;
+    EXPECT_EQ(kept.total(), 2 * k.contoursIn + 2) << scene;
     // The same result as the uncounted pipeline.
     const rb::ImageResult plain = rb::processImage(image, kDefaults);
     EXPECT_EQ(plain.clippedArea, r.clippedArea) << scene;
@@ -421,7 +441,7 @@ TEST(BatchCoreCalls, TwoPerContourPlusTwoAndTheMaskCheckDoesNotClip) {
   const rb::ImageResult e = rb::detail::processCountingCoreCalls(image, edges, withEdges);
   ASSERT_EQ(e.status, rb::Status::Ok) << e.reason;
   EXPECT_EQ(withEdges.clipLines, 1);
-  EXPECT_EQ(withEdges.total(), 2 * e.contoursIn + 3);
+  EXPECT_EQ(withEdges.total(), 2 * e.contoursIn + 4);
   rb::detail::CoreCalls none;
   const rb::ImageResult blank = rb::detail::processCountingCoreCalls(
       cv::Mat(64, 64, CV_8UC1, cv::Scalar(255)), kDefaults, none);

@@ -226,7 +226,7 @@ TEST(BatchRun, NoTagsAndMissingIdAreNoRoi) {
   ASSERT_TRUE(cv::imwrite((tmp.path() / "in" / "blank.bmp").string(), blank));
   copyScene("scene_07", tmp.path() / "in" / "tagged.png");
   rb::BatchOptions options = optionsFor(tmp.path() / "in", tmp.path() / "out");
-  options.process.roi = "tags:0,1,2,9";
+  options.process.rois = {"tags:0,1,2,9"};
   const rb::RunSummary s = rb::run(options);
   ASSERT_EQ(s.images.size(), 2u);
   EXPECT_EQ(s.noRoi, 2u);

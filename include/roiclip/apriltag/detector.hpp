@@ -59,8 +59,9 @@ struct DetectorOptions {
   /// availableFamilies(). Unknown or repeated names throw InvalidInputError.
   std::string family = "tag36h11";
   /// Detect quads on an image decimated by this factor (>= 1), or 0 (the default) for a factor
-  /// chosen from each image's size by autoQuadDecimate(). Corners are refined on the full
-  /// resolution image either way (refineEdges), so decimation costs little corner accuracy; it
+  /// chosen from each image's size by autoQuadDecimate(), with a second full-resolution pass
+  /// when that finds no or only small tags (kAutoDecimateMinTagSide). Corners are refined on the
+  /// full resolution image either way (refineEdges), so decimation costs little corner accuracy; it
   /// loses tags whose side, divided by the factor, falls below about 20 pixels.
   float quadDecimate = 0.0f;
   /// Gaussian blur sigma applied to the quad-detection image (0 = off, negative = sharpen).
@@ -86,6 +87,10 @@ struct DetectorOptions {
 /// Quads are searched on images of at least this many pixels when the decimation is automatic:
 /// about 0.5 MP, where tags of 20 pixels or more per side (after decimation) are still found.
 constexpr double kAutoDecimatePixels = 500'000;
+/// With automatic decimation, an image is searched again at full resolution when the decimated
+/// pass found no tag, or its smallest tag side shrank below this many decimated pixels (a tag
+/// that small suggests smaller ones were lost).
+constexpr double kAutoDecimateMinTagSide = 24;
 
 /// The decimation DetectorOptions::quadDecimate = 0 uses for a width x height image: the largest
 /// of 1, 1.5, 2, 3, 4, 5, 6, 8, 10, 12, 16 that leaves at least kAutoDecimatePixels pixels

@@ -93,6 +93,10 @@ TagAnchor parseTagAnchor(const std::string& text);
 /// @return fails when a listed id is missing or detected more than once.
 RoiResult polygonThroughTags(const std::vector<Detection>& detections, const std::vector<int>& ids,
                              TagAnchor anchor = TagAnchor::Centre);
+/// As above with one anchor per id (`anchors.size() == ids.size()`), e.g. the outer corner of
+/// each tag. @throws InvalidInputError when the sizes differ.
+RoiResult polygonThroughTags(const std::vector<Detection>& detections, const std::vector<int>& ids,
+                             const std::vector<TagAnchor>& anchors);
 
 /// Convex hull of the 4 corners of every detected tag in `ids` (all detections when `ids` is
 /// empty). The hull is oriented like an outer contour: negative shoelace sum.
@@ -166,17 +170,21 @@ struct RoiSpec {
   enum class Kind { Tags, Hull, Board, TagFrame };
   Kind kind = Kind::Tags;
   std::vector<int> ids;  ///< Tags: the order; Hull: the set (empty = all); TagFrame: 1
-  TagAnchor anchor = TagAnchor::Centre;  ///< Tags only
-  std::string roiName;                   ///< Board only (empty = all of the board's ROIs)
-  Paths tagFramePaths;                   ///< TagFrame only
+  /// Tags only: the anchor of each id (same length as ids).
+  std::vector<TagAnchor> anchors;
+  std::string roiName;  ///< Board only (empty = all of the board's ROIs)
+  Paths tagFramePaths;  ///< TagFrame only
 };
 
 /// Parse one of
-///   `tags:0,1,2,3`  `tags:0,1,2,3@top-left`       polygonThroughTags (anchor default centre)
+///   `tags:0,1,2,3`                                polygonThroughTags through the tag centres
+///   `tags:22@top-left,24@top-right,25@bottom-right,23@bottom-left`   each tag's own anchor
+///   `tags:0,1,2,3@top-left`                       one anchor after the last id: for every tag
 ///   `hull`  `hull:0,2,5`                          convexHullOfTags
 ///   `board`  `board:inspection`                   boardRoi (the board file is given separately)
 ///   `tag:5:0.5,-0.5;2.5,-0.5;2.5,0.5;0.5,0.5`     tagFrameRoi; vertices `x,y` separated by `;`,
 ///                                                 several paths separated by `|`
+/// An id listed twice (`tags:0,0,0`, `hull:1,1`) is refused.
 /// @throws InvalidInputError quoting the text and saying what is wrong.
 RoiSpec parseRoiSpec(const std::string& text);
 

@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include <roiclip/apriltag/detector.hpp>
 #include <roiclip/opencv/contours.hpp>
@@ -29,11 +30,18 @@ constexpr std::int64_t kDefaultMaxPixels = 100'000'000;
 /// them; the member initialisers are the defaults of the library and of `roiclip run`.
 struct RunOptions {
   apriltag::DetectorOptions detector;
-  /// ROI spec as parsed by apriltag::parseRoiSpec: "hull" (default: convex hull of all detected
-  /// tags), "hull:0,2,5", "tags:0,1,2,3[@anchor]", "board[:name]", "tag:ID:x,y;x,y;...".
-  std::string roi = "hull";
+  /// ROI specs as parsed by apriltag::parseRoiSpec: "hull" (default: convex hull of all detected
+  /// tags), "hull:0,2,5", "tags:0,1,2,3[@anchor]", "board[:name]", "tag:ID:x,y;x,y;...". Each
+  /// spec is one named region ("board" without a name gives one per board ROI); the image's
+  /// region is their union. At least one.
+  std::vector<std::string> rois = {"hull"};
   /// Board JSON for "board" specs (apriltag::Board::load format).
   std::string boardFile;
+  /// The tags are not objects: by default the region is the ROI minus every detected tag's quad
+  /// (its black border), each grown outwards by tagMargin px (>= 0) to take in the white margin
+  /// and blur. keepTags keeps the tags in the region (the behaviour before 0.2).
+  double tagMargin = 0.0;
+  bool keepTags = false;
   ContourOptions contours;
   FillRule subjectFillRule = FillRule::EvenOdd;  ///< for the contours (as cv::fillPoly draws)
   FillRule roiFillRule = FillRule::EvenOdd;      ///< for the ROI paths

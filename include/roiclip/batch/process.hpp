@@ -6,7 +6,7 @@
 // positive one.
 //
 //   roiclip::batch::RunOptions options;               // hull of all tags, Otsu, even-odd
-//   options.roi = "board:inspection";
+//   options.rois = {"board:inspection"};
 //   options.boardFile = "images/board.json";
 //   const roiclip::batch::ImageResult r = roiclip::batch::processImage(cv::imread(f), options);
 //   if (r.status == roiclip::batch::Status::Ok) use(r.clipped, r.clippedArea);
@@ -38,6 +38,17 @@ struct ContourResult {
   double clippedArea = 0;
 };
 
+/// One named ROI of the run: each spec of RunOptions::rois ("board" alone gives one per board
+/// ROI). The image's region is the union of all of them, minus the tag quads.
+struct RoiRegion {
+  std::string name;     ///< the board ROI's name, or the spec as given ("hull", "tags:0,1,2,3")
+  Paths paths;          ///< as built from the tags (may self-intersect; read with roiFillRule)
+  Paths region;         ///< this ROI minus the excluded tag quads: simple rings, read with EvenOdd
+  double area = 0;      ///< area of `region`, px^2
+  int contoursOut = 0;  ///< contours with a part inside `region`
+  double clippedArea = 0;  ///< area of the contours' parts inside `region`
+};
+
 /// Seconds spent in each stage.
 struct StageTimes {
   double detect = 0, roi = 0, contours = 0, clip = 0, check = 0, total = 0;
@@ -50,9 +61,18 @@ struct ImageResult {
   std::string reason;  ///< empty when Ok; one line otherwise
   int width = 0, height = 0;
   std::vector<apriltag::Detection> tags;
+  /// Detections dropped as doubtful (DetectorOptions::maxHamming, minDecisionMargin).
+  std::vector<apriltag::Detection> rejectedTags;
+  float quadDecimate = 1.0f;                         ///< the AprilTag decimation that found `tags`
   std::optional<apriltag::MissingTags> missingTags;  ///< set when the ROI builder failed
-  Paths roi;                            ///< as built (may self-intersect; read with roiFillRule)
-  double roiArea = 0;                   ///< area of roi under roiFillRule, px^2
+  std::vector<RoiRegion> rois;  ///< every named ROI (one unless several specs or a whole board)
+  /// The tag quads taken out of the region (each grown by RunOptions::tagMargin); empty with
+  /// RunOptions::keepTags.
+  Paths excludedTags;
+  /// The region every contour is clipped against: the union of `rois` minus `excludedTags`, as
+  /// simple rings read with FillRule::EvenOdd.
+  Paths roi;
+  double roiArea = 0;                   ///< area of roi, px^2
   std::vector<ContourResult> contours;  ///< every contour kept (after minArea), clipped
   int contoursIn = 0;                   ///< outer contours detected and kept
   int contoursOut = 0;                  ///< of those, how many have a non-empty part inside the ROI

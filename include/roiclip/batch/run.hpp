@@ -35,7 +35,15 @@ struct BatchOptions {
   bool writeReport = true;       ///< write report.html
 };
 
-/// One row of the summary.
+/// The figures of one named ROI of an image (RoiRegion).
+struct RoiRecord {
+  std::string name;
+  double roiArea = 0;
+  int contoursOut = 0;
+  double clippedArea = 0;
+};
+
+/// One image of the summary (summary.csv has one row per image and ROI).
 struct ImageRecord {
   std::string image;  ///< path relative to the input folder ('/' separated)
   std::string name;   ///< output NAME (relative to the output folder)
@@ -45,6 +53,8 @@ struct ImageRecord {
   bool skipped = false;  ///< outputs were up to date; figures read back from NAME.json
   int width = 0, height = 0;
   int tagsFound = 0;
+  int tagsRejected = 0;         ///< doubtful detections dropped (DetectorOptions::maxHamming, ...)
+  std::vector<RoiRecord> rois;  ///< per named ROI; the figures below are for their union
   double roiArea = 0;
   int contoursIn = 0, contoursOut = 0;
   double clippedArea = 0;
