@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <ostream>
 #include <string>
 
@@ -195,9 +196,71 @@ MaskComparison compareMasks(cv::InputArray expectedIn, cv::InputArray actualIn, 
   return c;
 }
 
-MaskCheck checkRoiClip(const Paths& subject, const Paths& roi, const PolygonSet& result,
-                       FillRule subjectRule, FillRule roiRule, cv::Size size,
+namespace {
+
+Paths shifted(const Paths& paths, Point by) {
+  Paths out = paths;
+  for (Path& path : out) {
+    for (Point& p : path) p += by;
+  }
+  return out;
+}
+
+// The part of the image the masks can differ in. For an intersection, every mask is off
+// outside the ROI's bounding box, except where the result itself strays (a bug the check must
+// see: the result's box is included) and where cv::fillPoly sets pixels up to 1.87 px outside a
+// polygon (kOpenCvBand): the union of both boxes grown by the wider band plus a pixel, cut to
+// the image. Other operations, or nothing in the image: the whole image.
+cv::Rect comparedWindow(const Paths& roi, const PolygonSet& result, cv::Size size,
+                        const MaskCheckOptions& options) {
+  const cv::Rect image(0, 0, size.width, size.height);
+  if (options.op != ClipOp::Intersection) return image;
+  double x0 = std::numeric_limits<double>::infinity(), y0 = x0, x1 = -x0, y1 = -x0;
+  const auto take = [&](const Paths& paths) {
+    for (const Path& path : paths) {
+      for (const Point& p : path) {
+        x0 = std::min(x0, p.x);
+        y0 = std::min(y0, p.y);
+        x1 = std::max(x1, p.x);
+        y1 = std::max(y1, p.y);
+      }
+    }
+  };
+  take(roi);
+  take(result.toPaths());
+  const double grow = std::max(options.exactBand, options.openCvBand) + 1;
+  if (!(x0 <= x1) || !std::isfinite(x0) || !std::isfinite(x1)) return image;
+  const auto clamp = [](double v, int hi) {
+    return static_cast<int>(std::clamp(v, 0.0, static_cast<double>(hi)));
+  };
+  const int left = clamp(std::floor(x0 - grow), size.width);
+  const int top = clamp(std::floor(y0 - grow), size.height);
+  const int right = clamp(std::ceil(x1 + grow) + 1, size.width);
+  const int bottom = clamp(std::ceil(y1 + grow) + 1, size.height);
+  const cv::Rect window(left, top, right - left, bottom - top);
+  return window.area() > 0 ? window : image;
+}
+
+}  // namespace
+
+MaskCheck checkRoiClip(const Paths& subjectIn, const Paths& roiIn, const PolygonSet& resultIn,
+                       FillRule subjectRule, FillRule roiRule, cv::Size sizeIn,
                        const MaskCheckOptions& options) {
+  // Only the window where the masks can differ is rasterised; moving everything by whole pixels
+  // keeps every pixel's verdict (pixel centres and the grid are both integer-aligned).
+  const cv::Rect window = comparedWindow(roiIn, resultIn, sizeIn, options);
+  const Point by(-window.x, -window.y);
+  const Paths subject = shifted(subjectIn, by);
+  const Paths roi = shifted(roiIn, by);
+  PolygonSet result = resultIn;
+  for (Polygon& polygon : result.polygons) {
+    for (Point& p : polygon.outer) p += by;
+    for (Path& hole : polygon.holes) {
+      for (Point& p : hole) p += by;
+    }
+  }
+  const cv::Size size = window.size();
+
   MaskCheck check;
   const cv::Mat vectorMask = rasterize(result, size, options.grid);
 

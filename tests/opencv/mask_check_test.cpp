@@ -1,5 +1,6 @@
 // Vector-vs-raster proof: clip results rasterised exactly must match the raster route (our
 // rasteriser and OpenCV's fillPoly) off a thin band around the operands' edges.
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -507,6 +508,48 @@ TEST(MaskCheck, DetectsAWrongResult) {
       checkRoiClip(subject, roi, PolygonSet{}, FillRule::EvenOdd, FillRule::EvenOdd, size).ok());
   const PolygonSet united = clip(ClipOp::Union, subject, roi, FillRule::EvenOdd, FillRule::EvenOdd);
   EXPECT_FALSE(checkRoiClip(subject, roi, united, FillRule::EvenOdd, FillRule::EvenOdd, size).ok());
+}
+
+}  // namespace
+}  // namespace roiclip::opencv
+
+namespace roiclip::opencv {
+namespace {
+
+// An intersection is compared only in the ROI's (and the result's) bounding box: the counts
+// equal those of whole-image masks, and a result that strays far outside the ROI still fails.
+TEST(MaskCheck, IntersectionWindowGivesTheWholeImageCounts) {
+  const cv::Size size(400, 300);
+  const Paths subject = {{{10, 10}, {390, 15}, {380, 290}, {20, 280}},
+                         {{150, 100}, {150, 200}, {260, 210}, {250, 90}}};
+  const Paths roi = {{{120.5, 60}, {300, 80}, {290.25, 240}, {100, 220}}};
+  const PolygonSet clipped =
+      clip(ClipOp::Intersection, subject, roi, FillRule::EvenOdd, FillRule::EvenOdd);
+  const MaskCheck check =
+      checkRoiClip(subject, roi, clipped, FillRule::EvenOdd, FillRule::EvenOdd, size);
+  ASSERT_TRUE(check.ok());
+  Paths edges = subject;
+  edges.insert(edges.end(), roi.begin(), roi.end());
+  const cv::Mat expected =
+      rasterize(subject, FillRule::EvenOdd, size) & rasterize(roi, FillRule::EvenOdd, size);
+  const MaskComparison whole = compareMasks(expected, rasterize(clipped, size), kExactBand, edges);
+  EXPECT_EQ(check.vectorVsRaster.both, whole.both);
+  EXPECT_EQ(check.vectorVsRaster.onlyExpected, whole.onlyExpected);
+  EXPECT_EQ(check.vectorVsRaster.onlyActual, whole.onlyActual);
+  EXPECT_EQ(check.vectorVsRaster.offBandOnlyExpected, whole.offBandOnlyExpected);
+  EXPECT_EQ(check.vectorVsRaster.offBandOnlyActual, whole.offBandOnlyActual);
+  EXPECT_DOUBLE_EQ(check.vectorVsRaster.iou, whole.iou);
+  EXPECT_LT(check.vectorVsRaster.bandPixels, whole.bandPixels);  // only the window's
+
+  PolygonSet stray = clipped;
+  Polygon far;
+  far.outer = {{350, 250}, {350, 290}, {390, 290}, {390, 250}};
+  if (signedArea(far.outer) > 0) std::reverse(far.outer.begin(), far.outer.end());
+  stray.polygons.push_back(far);
+  const MaskCheck wrong =
+      checkRoiClip(subject, roi, stray, FillRule::EvenOdd, FillRule::EvenOdd, size);
+  EXPECT_FALSE(wrong.ok());
+  EXPECT_GT(wrong.vectorVsRaster.offBandOnlyActual, 1000);
 }
 
 }  // namespace
