@@ -113,7 +113,7 @@ TEST(ReadFeatures, RejectsPlainPaths) {
 TEST(ToGeoJson, FeatureCollectionWithClosedRingsAreaAndRingCount) {
   const Paths frame = readPaths(kData + "frame.geojson");
   const PolygonSet set = simplify(frame, FillRule::EvenOdd);
-  const json root = json::parse(toGeoJson(set));
+  const json root = json::parse(toGeoJson(set, -1, RingOrientation::OpenCv));
   EXPECT_EQ(root.at("type"), "FeatureCollection");
   ASSERT_EQ(root.at("features").size(), 1u);
   const json& feature = root.at("features")[0];
@@ -136,8 +136,23 @@ TEST(ToGeoJson, FeatureCollectionWithClosedRingsAreaAndRingCount) {
     }
   }
   // Reading the output back gives the same region, with the same orientations.
-  const Paths back = parsePaths(toGeoJson(set, 2));
+  const Paths back = parsePaths(toGeoJson(set, 2, RingOrientation::OpenCv));
   EXPECT_EQ(back, set.toPaths());
+}
+
+TEST(ToGeoJson, Rfc7946OrderByDefault) {
+  const PolygonSet set = simplify(readPaths(kData + "frame.geojson"), FillRule::EvenOdd);
+  const Paths back = parsePaths(toGeoJson(set));
+  const Paths native = set.toPaths();
+  ASSERT_EQ(back.size(), native.size());
+  for (std::size_t r = 0; r < back.size(); ++r) {
+    // The same ring, reversed: exterior rings positive, holes negative.
+    EXPECT_DOUBLE_EQ(signedArea(back[r]), -signedArea(native[r]));
+    EXPECT_EQ(back[r].front(), native[r].front()) << "the first point stays first";
+  }
+  EXPECT_GT(signedArea(back[0]), 0.0);  // polygon 0's exterior
+  EXPECT_LT(signedArea(back[1]), 0.0);  // its hole
+  EXPECT_DOUBLE_EQ(simplify(back, FillRule::NonZero).area(), set.area());
 }
 
 TEST(ToGeoJson, EmptySetIsAnEmptyMultiPolygon) {
