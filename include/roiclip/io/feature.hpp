@@ -141,7 +141,8 @@ std::vector<Warning> snapWarnings(const Paths& paths, const std::string& source,
 /// one feature with one single-ring polygon per path), Wkt (parseWktFeatures()), or Auto (by
 /// content: WKT when the first non-blank character is a letter).
 /// @throws InvalidInputError as the reader of that format.
-std::vector<Feature> parseAnyFeatures(const std::string& text, const std::string& source,
+std::vector<Feature> parseAnyFeatures(const std::string& text,
+                                      const std::string& source = "<string>",
                                       Format format = Format::Auto,
                                       const ReadOptions& options = {});
 
@@ -152,7 +153,7 @@ std::vector<Feature> readAnyFeatures(const std::string& file, Format format = Fo
 
 /// Open polylines from `text`: parseLines() (GeoJSON, plain JSON) or parseWktLines(), `format`
 /// chosen as for parseAnyFeatures().
-Paths parseAnyLines(const std::string& text, const std::string& source,
+Paths parseAnyLines(const std::string& text, const std::string& source = "<string>",
                     Format format = Format::Auto, const ReadOptions& options = {});
 
 /// parseAnyLines() on the contents of `file` ("-": standard input).
