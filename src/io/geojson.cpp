@@ -72,56 +72,15 @@ class PathReader {
 
   // Polygon coordinates of a Polygon, MultiPolygon or GeometryCollection, appended to `out`.
   void readGeometry(const json& geometry, const std::string& where, std::vector<Paths>& out) {
-    if (geometry.is_null()) return;  // GeoJSON allows features without geometry
-    if (!geometry.is_object()) fail(source_, where, "geometry must be an object or null");
-    const std::string type = memberType(geometry, where);
-    if (type == "GeometryCollection") {
-      forEachMember(geometry, where, [&](const json& member, const std::string& at) {
-        readGeometry(member, at, out);
-      });
-      return;
-    }
-    if (type != "Polygon" && type != "MultiPolygon") {
-      fail(source_, where,
-           "unsupported geometry type \"" + type + "\" (expected Polygon or MultiPolygon)");
-    }
-    const auto coords = geometry.find("coordinates");
-    if (coords == geometry.end()) fail(source_, where, type + " without \"coordinates\"");
-    if (type == "Polygon") {
-      out.push_back(readPolygon(*coords, where + ", polygon 0"));
-      return;
-    }
-    if (!coords->is_array()) fail(source_, where, "MultiPolygon coordinates must be an array");
-    for (std::size_t p = 0; p < coords->size(); ++p) {
-      out.push_back(readPolygon((*coords)[p], where + ", polygon " + std::to_string(p)));
-    }
+    readGeometryOf(
+        geometry, where, "Polygon", "polygon", out,
+        [this](const json& rings, const std::string& at) { return readPolygon(rings, at); });
   }
 
   // Line coordinates of a LineString, MultiLineString or GeometryCollection, appended to `out`.
   void readLineGeometry(const json& geometry, const std::string& where, Paths& out) {
-    if (geometry.is_null()) return;
-    if (!geometry.is_object()) fail(source_, where, "geometry must be an object or null");
-    const std::string type = memberType(geometry, where);
-    if (type == "GeometryCollection") {
-      forEachMember(geometry, where, [&](const json& member, const std::string& at) {
-        readLineGeometry(member, at, out);
-      });
-      return;
-    }
-    if (type != "LineString" && type != "MultiLineString") {
-      fail(source_, where,
-           "unsupported geometry type \"" + type + "\" (expected LineString or MultiLineString)");
-    }
-    const auto coords = geometry.find("coordinates");
-    if (coords == geometry.end()) fail(source_, where, type + " without \"coordinates\"");
-    if (type == "LineString") {
-      out.push_back(readLine(*coords, where + ", line 0"));
-      return;
-    }
-    if (!coords->is_array()) fail(source_, where, "MultiLineString coordinates must be an array");
-    for (std::size_t l = 0; l < coords->size(); ++l) {
-      out.push_back(readLine((*coords)[l], where + ", line " + std::to_string(l)));
-    }
+    readGeometryOf(geometry, where, "LineString", "line", out,
+                   [this](const json& line, const std::string& at) { return readLine(line, at); });
   }
 
   std::vector<Feature> readGeoJson(const json& root) {
@@ -171,6 +130,39 @@ class PathReader {
   }
 
  private:
+  // A `single` geometry (Polygon, LineString), its Multi form, or a GeometryCollection of them
+  // (collections may nest): read(coordinates, where) for each part ("polygon 2", "line 0"), the
+  // results appended to `out`. A null geometry (a feature without one) adds nothing.
+  template <class Out, class Read>
+  void readGeometryOf(const json& geometry, const std::string& where, const std::string& single,
+                      const char* part, Out& out, Read read) {
+    if (geometry.is_null()) return;
+    if (!geometry.is_object()) fail(source_, where, "geometry must be an object or null");
+    const std::string type = memberType(geometry, where);
+    const std::string multi = "Multi" + single;
+    if (type == "GeometryCollection") {
+      forEachMember(geometry, where, [&](const json& member, const std::string& at) {
+        readGeometryOf(member, at, single, part, out, read);
+      });
+      return;
+    }
+    if (type != single && type != multi) {
+      fail(source_, where,
+           "unsupported geometry type \"" + type + "\" (expected " + single + " or " + multi + ")");
+    }
+    const auto coords = geometry.find("coordinates");
+    if (coords == geometry.end()) fail(source_, where, type + " without \"coordinates\"");
+    const std::string name = where + ", " + part + " ";
+    if (type == single) {
+      out.push_back(read(*coords, name + "0"));
+      return;
+    }
+    if (!coords->is_array()) fail(source_, where, multi + " coordinates must be an array");
+    for (std::size_t i = 0; i < coords->size(); ++i) {
+      out.push_back(read((*coords)[i], name + std::to_string(i)));
+    }
+  }
+
   // Calls visit(member, where) for each member of a GeometryCollection.
   template <class Visit>
   void forEachMember(const json& collection, const std::string& where, Visit visit) const {

@@ -222,49 +222,49 @@ class WktReader {
   }
 
   void readRegion(const std::string& text, const std::string& where, std::vector<Paths>& polygons) {
-    const Tagged g = tagged(text, where);
-    if (g.type == "POLYGON") {
-      const auto p = parse<ReadPolygon>(g.text, where);
-      // POLYGON EMPTY reads as a polygon without points.
-      if (!p.outer().empty()) polygons.push_back(polygon(p, join(where, "polygon 0")));
-    } else if (g.type == "MULTIPOLYGON") {
-      const auto m = parse<ReadMultiPolygon>(g.text, where);
-      for (std::size_t p = 0; p < m.size(); ++p) {
-        polygons.push_back(polygon(m[p], join(where, "polygon " + std::to_string(p))));
-      }
-    } else if (g.type == "GEOMETRYCOLLECTION") {
-      const std::vector<std::string> members = collectionMembers(g.text, where);
-      for (std::size_t m = 0; m < members.size(); ++m) {
-        readRegion(members[m], join(where, "member " + std::to_string(m)), polygons);
-      }
-    } else {
-      fail(checker_.source(), where,
-           "unsupported geometry type \"" + g.type + "\" (expected POLYGON or MULTIPOLYGON)");
-    }
+    readGeometryOf<ReadPolygon, ReadMultiPolygon>(text, where, "POLYGON", "polygon",
+                                                  [&](const ReadPolygon& p, const std::string& at) {
+                                                    // POLYGON EMPTY reads as a polygon without
+                                                    // points.
+                                                    if (!p.outer().empty())
+                                                      polygons.push_back(polygon(p, at));
+                                                  });
   }
 
   void readLines(const std::string& text, const std::string& where, Paths& out) {
+    readGeometryOf<ReadLine, ReadMultiLine>(text, where, "LINESTRING", "line",
+                                            [&](const ReadLine& l, const std::string& at) {
+                                              if (l.empty()) return;  // LINESTRING EMPTY
+                                              const std::string name = checker_.flatName(at);
+                                              Path path = points({l.begin(), l.end()}, name);
+                                              checker_.finishLine(path, name);
+                                              out.push_back(std::move(path));
+                                            });
+  }
+
+  // A `single` geometry (POLYGON, LINESTRING), its MULTI form, or a GEOMETRYCOLLECTION of them
+  // (collections may nest): take(part, where) for each part ("polygon 2", "line 0").
+  template <class Single, class Multi, class Take>
+  void readGeometryOf(const std::string& text, const std::string& where, const std::string& single,
+                      const char* part, Take take) {
     const Tagged g = tagged(text, where);
-    const auto line = [&](const ReadLine& in, std::size_t l) {
-      const std::string at = checker_.flatName(join(where, "line " + std::to_string(l)));
-      Path path = points({in.begin(), in.end()}, at);
-      checker_.finishLine(path, at);
-      out.push_back(std::move(path));
-    };
-    if (g.type == "LINESTRING") {
-      const auto l = parse<ReadLine>(g.text, where);
-      if (!l.empty()) line(l, 0);
-    } else if (g.type == "MULTILINESTRING") {
-      const auto m = parse<ReadMultiLine>(g.text, where);
-      for (std::size_t l = 0; l < m.size(); ++l) line(m[l], l);
+    const std::string multi = "MULTI" + single;
+    const std::string name = join(where, std::string(part) + " ");
+    if (g.type == single) {
+      take(parse<Single>(g.text, where), name + "0");
+    } else if (g.type == multi) {
+      const auto m = parse<Multi>(g.text, where);
+      for (std::size_t i = 0; i < m.size(); ++i) take(m[i], name + std::to_string(i));
     } else if (g.type == "GEOMETRYCOLLECTION") {
       const std::vector<std::string> members = collectionMembers(g.text, where);
       for (std::size_t m = 0; m < members.size(); ++m) {
-        readLines(members[m], join(where, "member " + std::to_string(m)), out);
+        readGeometryOf<Single, Multi>(members[m], join(where, "member " + std::to_string(m)),
+                                      single, part, take);
       }
     } else {
       fail(checker_.source(), where,
-           "unsupported geometry type \"" + g.type + "\" (expected LINESTRING or MULTILINESTRING)");
+           "unsupported geometry type \"" + g.type + "\" (expected " + single + " or " + multi +
+               ")");
     }
   }
 

@@ -82,7 +82,8 @@ TEST(SimplifyFeatures, OneResultPerFeatureWithItsIdAndProperties) {
   const std::vector<Feature> one = simplifyFeatures({dissolve(features)}, "p", FillRule::EvenOdd);
   ASSERT_EQ(one.size(), 1u);
   EXPECT_EQ(one[0].id, "");
-  EXPECT_EQ(json::parse(one[0].propertiesJson), json::parse(R"({"area":120.5,"rings":4})"));  // a and 7 merge
+  EXPECT_EQ(json::parse(one[0].propertiesJson),
+            json::parse(R"({"area":120.5,"rings":4})"));  // a and 7 merge
 }
 
 TEST(ClipFeatures, EachSubjectFeatureByTheUnionOfTheClipFeatures) {

@@ -12,6 +12,8 @@
 
 #include <roiclip/io/geojson.hpp>
 
+#include "expect_invalid.hpp"
+
 namespace roiclip::io {
 namespace {
 
@@ -19,21 +21,6 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 
 const std::string kData = std::string(ROICLIP_TEST_DATA) + "/io/";
-
-// Runs `f`, requires an InvalidInputError and every fragment in its message.
-void expectInvalid(const std::function<void()>& f, std::initializer_list<std::string> fragments) {
-  try {
-    f();
-    ADD_FAILURE() << "no InvalidInputError thrown";
-  } catch (const InvalidInputError& e) {
-    const std::string message = e.what();
-    for (const std::string& fragment : fragments) {
-      EXPECT_NE(message.find(fragment), std::string::npos)
-          << "message \"" << message << "\" lacks \"" << fragment << "\"";
-    }
-    EXPECT_EQ(message.find('\n'), std::string::npos) << "message must be one line: " << message;
-  }
-}
 
 std::string uniqueTempDir(const std::string& name) {
   // The pid keeps concurrent runs of the suite (several builds on one machine) apart.

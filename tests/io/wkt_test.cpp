@@ -11,24 +11,12 @@
 #include <roiclip/io/geojson.hpp>
 #include <roiclip/io/wkt.hpp>
 
+#include "expect_invalid.hpp"
+
 namespace roiclip::io {
 namespace {
 
 const std::string kData = std::string(ROICLIP_TEST_DATA) + "/io/";
-
-void expectInvalid(const std::function<void()>& f, std::initializer_list<std::string> fragments) {
-  try {
-    f();
-    ADD_FAILURE() << "no InvalidInputError thrown";
-  } catch (const InvalidInputError& e) {
-    const std::string message = e.what();
-    for (const std::string& fragment : fragments) {
-      EXPECT_NE(message.find(fragment), std::string::npos)
-          << "message \"" << message << "\" lacks \"" << fragment << "\"";
-    }
-    EXPECT_EQ(message.find('\n'), std::string::npos) << "message must be one line: " << message;
-  }
-}
 
 std::size_t rings(const std::vector<Feature>& features) { return allRings(features).size(); }
 
