@@ -47,8 +47,8 @@ constexpr const char* kFeaturesHelp =
     "(so does an input without features: a bare geometry, {\"paths\": ...}, WKT). Rings are\n"
     "written in RFC 7946 order (exterior: positive shoelace sum, i.e. counter-clockwise with y\n"
     "up, clockwise on a y-down image); --orientation opencv writes cv::findContours' order.\n"
-    "'-' reads standard input or writes standard output. A z coordinate is dropped with a\n"
-    "warning; so is snapping that moves a vertex by more than 1/4 grid step.\n"
+    "'-' reads standard input or writes standard output. Warnings (stderr): a z coordinate\n"
+    "is dropped; snapping to the grid moved a vertex by more than 1/4 grid step.\n"
     "\n";
 
 constexpr const char* kClipLinesHelp =
@@ -102,7 +102,8 @@ GeometryCommands::GeometryCommands(CLI::App& app) {
   // path) or plain {"paths": [[[x, y], ...], ...]}. Output: GeoJSON FeatureCollection.
   Simplify& s = simplify_;
   s.cmd = app.add_subcommand(
-      "simplify", "resolve self-intersecting paths into simple polygons with holes (GeoJSON out)");
+      "simplify",
+      "resolve self-intersecting paths into simple polygons with holes (GeoJSON or WKT out)");
   s.cmd->footer(kFeaturesHelp + exitCodes);
   s.cmd->add_option("input", s.input, "GeoJSON, {\"paths\": ...} JSON or WKT file ('-': stdin)")
       ->required();
@@ -113,7 +114,7 @@ GeometryCommands::GeometryCommands(CLI::App& app) {
   addGridScale(s.cmd);
 
   Clip& c = clip_;
-  c.cmd = app.add_subcommand("clip", "boolean operation SUBJECT op CLIP (GeoJSON out)");
+  c.cmd = app.add_subcommand("clip", "boolean operation SUBJECT op CLIP (GeoJSON or WKT out)");
   c.cmd->footer(kFeaturesHelp + exitCodes);
   c.cmd->add_option("subject", c.subject, "subject paths file ('-': stdin)")->required();
   c.cmd->add_option("clip", c.clip, "clip paths file ('-': stdin)")->required();
@@ -129,7 +130,8 @@ GeometryCommands::GeometryCommands(CLI::App& app) {
 
   ClipLines& l = clipLines_;
   l.cmd = app.add_subcommand(
-      "clip-lines", "the parts of open polylines LINES inside (or outside) REGION (GeoJSON out)");
+      "clip-lines",
+      "the parts of open polylines LINES inside (or outside) REGION (GeoJSON or WKT out)");
   l.cmd->footer(kClipLinesHelp + exitCodes);
   l.cmd->add_option("lines", l.lines, "open polylines file ('-': stdin)")->required();
   l.cmd->add_option("region", l.region, "region paths file ('-': stdin)")->required();
