@@ -2,7 +2,9 @@
 #include "geometry_commands.hpp"
 
 #include <iostream>
+#include <vector>
 
+#include <roiclip/io/feature.hpp>
 #include <roiclip/io/geojson.hpp>
 
 #include "exit_codes.hpp"
@@ -34,18 +36,20 @@ CLI::Validator clipOpValidator() {
   return parserValidator(parseClipOp, "intersection|union|difference|xor");
 }
 
-// GeoJSON to stdout, or atomically to the file `output`.
-template <class Result>
-void writeResult(const Result& result, const std::string& output,
-                 std::string (*toText)(const Result&, int),
-                 void (*writeFile)(const Result&, const std::string&, int)) {
-  if (output.empty()) {
-    std::cout << toText(result, -1);
-    std::cout.flush();
-  } else {
-    writeFile(result, output, -1);
-  }
+void printWarnings(const std::vector<io::Warning>& warnings) {
+  for (const io::Warning& w : warnings) std::cerr << "roiclip: warning: " << w.what() << "\n";
 }
+
+constexpr const char* kFeaturesHelp =
+    "Features: each GeoJSON Feature is processed on its own and keeps its \"id\" and\n"
+    "\"properties\" (clip: each SUBJECT feature is clipped by the union of the CLIP features);\n"
+    "--dissolve merges them first and writes one feature with properties \"area\" and \"rings\"\n"
+    "(so does an input without features: a bare geometry, {\"paths\": ...}, WKT). Rings are\n"
+    "written in RFC 7946 order (exterior: positive shoelace sum, i.e. counter-clockwise with y\n"
+    "up, clockwise on a y-down image); --orientation opencv writes cv::findContours' order.\n"
+    "'-' reads standard input or writes standard output. Warnings (stderr): a z coordinate\n"
+    "is dropped; snapping to the grid moved a vertex by more than 1/4 grid step.\n"
+    "\n";
 
 constexpr const char* kClipLinesHelp =
     "LINES: GeoJSON LineString, MultiLineString, or a Feature, FeatureCollection or\n"
@@ -61,16 +65,6 @@ constexpr const char* kClipLinesHelp =
     "\n";
 
 }  // namespace
-
-InvalidInputError nameSource(const InvalidInputError& e, std::initializer_list<Source> sources) {
-  if (!e.location().source.empty()) return e;
-  std::string all;
-  for (const Source& source : sources) {
-    if (e.location().operand == source.operand) return e.withSource(source.name);
-    all += (all.empty() ? "" : ", ") + source.name;
-  }
-  return e.withSource(all);
-}
 
 PolygonSet simplifyInput(const Paths& paths, const std::string& source, FillRule rule,
                          const Grid& grid) {
@@ -108,20 +102,22 @@ GeometryCommands::GeometryCommands(CLI::App& app) {
   // path) or plain {"paths": [[[x, y], ...], ...]}. Output: GeoJSON FeatureCollection.
   Simplify& s = simplify_;
   s.cmd = app.add_subcommand(
-      "simplify", "resolve self-intersecting paths into simple polygons with holes (GeoJSON out)");
-  s.cmd->footer(exitCodes);
-  s.cmd->add_option("input", s.input, "GeoJSON or {\"paths\": ...} JSON file")->required();
+      "simplify",
+      "resolve self-intersecting paths into simple polygons with holes (GeoJSON or WKT out)");
+  s.cmd->footer(kFeaturesHelp + exitCodes);
+  s.cmd->add_option("input", s.input, "GeoJSON, {\"paths\": ...} JSON or WKT file ('-': stdin)")
+      ->required();
   s.cmd->add_option("--fill-rule", s.rule, "fill rule for the input paths")
       ->check(fillRuleValidator())
       ->capture_default_str();
-  s.cmd->add_option("-o,--output", s.output, "output GeoJSON file (default: stdout)");
+  addCommon(s.cmd, s, true);
   addGridScale(s.cmd);
 
   Clip& c = clip_;
-  c.cmd = app.add_subcommand("clip", "boolean operation SUBJECT op CLIP (GeoJSON out)");
-  c.cmd->footer(exitCodes);
-  c.cmd->add_option("subject", c.subject, "subject paths file")->required();
-  c.cmd->add_option("clip", c.clip, "clip paths file")->required();
+  c.cmd = app.add_subcommand("clip", "boolean operation SUBJECT op CLIP (GeoJSON or WKT out)");
+  c.cmd->footer(kFeaturesHelp + exitCodes);
+  c.cmd->add_option("subject", c.subject, "subject paths file ('-': stdin)")->required();
+  c.cmd->add_option("clip", c.clip, "clip paths file ('-': stdin)")->required();
   c.cmd->add_option("--op", c.op, "operation")->check(clipOpValidator())->capture_default_str();
   c.cmd->add_option("--fill-rule", c.bothRule, "fill rule for both operands (default evenodd)")
       ->check(fillRuleValidator());
@@ -129,23 +125,43 @@ GeometryCommands::GeometryCommands(CLI::App& app) {
       ->check(fillRuleValidator());
   c.cmd->add_option("--clip-fill-rule", c.clipRule, "fill rule for CLIP (overrides)")
       ->check(fillRuleValidator());
-  c.cmd->add_option("-o,--output", c.output, "output GeoJSON file (default: stdout)");
+  addCommon(c.cmd, c, true);
   addGridScale(c.cmd);
 
   ClipLines& l = clipLines_;
   l.cmd = app.add_subcommand(
-      "clip-lines", "the parts of open polylines LINES inside (or outside) REGION (GeoJSON out)");
+      "clip-lines",
+      "the parts of open polylines LINES inside (or outside) REGION (GeoJSON or WKT out)");
   l.cmd->footer(kClipLinesHelp + exitCodes);
-  l.cmd->add_option("lines", l.lines, "open polylines file")->required();
-  l.cmd->add_option("region", l.region, "region paths file")->required();
+  l.cmd->add_option("lines", l.lines, "open polylines file ('-': stdin)")->required();
+  l.cmd->add_option("region", l.region, "region paths file ('-': stdin)")->required();
   l.cmd->add_option("--part", l.part, "which parts of LINES to keep")
       ->transform(CLI::IsMember({"inside", "outside"}, CLI::ignore_case))
       ->capture_default_str();
   l.cmd->add_option("--fill-rule", l.rule, "fill rule for REGION")
       ->check(fillRuleValidator())
       ->capture_default_str();
-  l.cmd->add_option("-o,--output", l.output, "output GeoJSON file (default: stdout)");
+  addCommon(l.cmd, l, false);
   addGridScale(l.cmd);
+}
+
+void GeometryCommands::addCommon(CLI::App* cmd, Common& options, bool regions) {
+  cmd->add_option("-o,--output", options.output, "output file (default or '-': stdout)");
+  cmd->add_option("--format", options.format, "output format")
+      ->transform(CLI::IsMember({"geojson", "wkt"}, CLI::ignore_case))
+      ->capture_default_str();
+  cmd->add_option("--input-format", options.inputFormat,
+                  "input format (auto: WKT when the text starts with a letter)")
+      ->transform(CLI::IsMember({"auto", "geojson", "wkt"}, CLI::ignore_case))
+      ->capture_default_str();
+  if (!regions) return;
+  cmd->add_option("--orientation", options.orientation,
+                  "ring order written: rfc7946 (exterior counter-clockwise with y up) or opencv "
+                  "(as cv::findContours)")
+      ->transform(CLI::IsMember({"rfc7946", "opencv"}, CLI::ignore_case))
+      ->capture_default_str();
+  cmd->add_flag("--dissolve", options.dissolve,
+                "merge all features first and write one (properties \"area\", \"rings\")");
 }
 
 void GeometryCommands::addGridScale(CLI::App* cmd) {
@@ -156,13 +172,45 @@ void GeometryCommands::addGridScale(CLI::App* cmd) {
       ->capture_default_str();
 }
 
+namespace {
+
+// An input read as features, warnings collected, dissolved on request.
+std::vector<io::Feature> readRegions(const std::string& file, const std::string& format,
+                                     bool dissolve, std::vector<io::Warning>& warnings) {
+  io::ReadOptions options;
+  options.warnings = &warnings;
+  std::vector<io::Feature> features =
+      io::readAnyFeatures(file, io::parseFormat(format.c_str()), options);
+  if (dissolve) features = {io::dissolve(features)};
+  return features;
+}
+
+void refuseTwoStdins(const std::string& a, const std::string& b) {
+  if (a == "-" && b == "-") {
+    throw InvalidInputError("<stdin>: only one input can be standard input ('-')");
+  }
+}
+
+}  // namespace
+
 void GeometryCommands::execute() const {
+  std::vector<io::Warning> warnings;
+  const auto snapCheck = [&](const Paths& paths, const std::string& file) {
+    for (io::Warning& w : io::snapWarnings(paths, io::sourceName(file), grid_)) {
+      warnings.push_back(std::move(w));
+    }
+  };
+  const auto writeOptions = [](const Common& options) {
+    return io::WriteOptions{io::parseRingOrientation(options.orientation.c_str()), -1};
+  };
   if (simplify_.cmd->parsed()) {
     const Simplify& s = simplify_;
-    const Paths paths = io::readPaths(s.input);
     const FillRule rule = parseFillRule(s.rule.c_str());
-    writeResult(simplifyInput(paths, s.input, rule, grid_), s.output, io::toGeoJson,
-                io::writeGeoJson);
+    const auto input = readRegions(s.input, s.inputFormat, s.dissolve, warnings);
+    snapCheck(io::allRings(input), s.input);
+    const auto result = io::simplifyFeatures(input, io::sourceName(s.input), rule, grid_);
+    printWarnings(warnings);
+    io::writeFeatures(result, s.output, io::parseFormat(s.format.c_str()), writeOptions(s));
   } else if (clip_.cmd->parsed()) {
     const Clip& c = clip_;
     const std::string base = c.bothRule.empty() ? "evenodd" : c.bothRule;
@@ -170,19 +218,32 @@ void GeometryCommands::execute() const {
         parseFillRule((c.subjectRule.empty() ? base : c.subjectRule).c_str());
     const FillRule clipRule = parseFillRule((c.clipRule.empty() ? base : c.clipRule).c_str());
     const ClipOp op = parseClipOp(c.op.c_str());
-    const Paths subject = io::readPaths(c.subject);
-    const Paths clipPaths = io::readPaths(c.clip);
-    writeResult(clipInputs(op, subject, c.subject, clipPaths, c.clip, subjectRule, clipRule, grid_),
-                c.output, io::toGeoJson, io::writeGeoJson);
+    refuseTwoStdins(c.subject, c.clip);
+    const auto subject = readRegions(c.subject, c.inputFormat, c.dissolve, warnings);
+    const auto clipRegion = readRegions(c.clip, c.inputFormat, c.dissolve, warnings);
+    snapCheck(io::allRings(subject), c.subject);
+    snapCheck(io::allRings(clipRegion), c.clip);
+    const auto result = io::clipFeatures(op, subject, io::sourceName(c.subject), clipRegion,
+                                         io::sourceName(c.clip), subjectRule, clipRule, grid_);
+    printWarnings(warnings);
+    io::writeFeatures(result, c.output, io::parseFormat(c.format.c_str()), writeOptions(c));
   } else if (clipLines_.cmd->parsed()) {
     const ClipLines& l = clipLines_;
     const FillRule rule = parseFillRule(l.rule.c_str());
     // IsMember() has already turned any spelling into "inside" or "outside".
     const LinePart part = l.part == "outside" ? LinePart::Outside : LinePart::Inside;
-    const Paths lines = io::readLines(l.lines);
-    const Paths region = io::readPaths(l.region);
-    writeResult(clipLinesInputs(lines, l.lines, region, l.region, rule, part, grid_), l.output,
-                io::linesToGeoJson, io::writeLinesGeoJson);
+    refuseTwoStdins(l.lines, l.region);
+    io::ReadOptions options;
+    options.warnings = &warnings;
+    const io::Format inputFormat = io::parseFormat(l.inputFormat.c_str());
+    const Paths lines = io::readAnyLines(l.lines, inputFormat, options);
+    const Paths region = io::allRings(io::readAnyFeatures(l.region, inputFormat, options));
+    snapCheck(lines, l.lines);
+    snapCheck(region, l.region);
+    const Paths result = clipLinesInputs(lines, io::sourceName(l.lines), region,
+                                         io::sourceName(l.region), rule, part, grid_);
+    printWarnings(warnings);
+    io::writeLines(result, l.output, io::parseFormat(l.format.c_str()));
   }
 }
 

@@ -1,5 +1,5 @@
 // `roiclip simplify`, `clip` and `clip-lines`: their options, and their work (read the files,
-// call the core, write GeoJSON).
+// call roiclip::io's feature-wise operations or the core, write GeoJSON or WKT).
 #pragma once
 
 #include <initializer_list>
@@ -7,20 +7,14 @@
 
 #include <CLI/CLI.hpp>
 
+#include <roiclip/io/feature.hpp>
 #include <roiclip/roiclip.hpp>
 
 namespace roiclip::app {
 
-/// The name of the input (a file) an operand of the core was read from.
-struct Source {
-  Operand operand;
-  std::string name;
-};
-
-/// `e` naming the source of the operand it concerns (e.location().operand, a field: the message
-/// is never read), or all of `sources` when it names no operand; an error that already names its
-/// source (e.g. one from roiclip::io) is returned as it is.
-InvalidInputError nameSource(const InvalidInputError& e, std::initializer_list<Source> sources);
+// Naming an error's file by its operand is roiclip::io's (the feature-wise operations do it).
+using io::nameSource;
+using io::Source;
 
 /// simplify() on paths read from `source`; an InvalidInputError from the core is rethrown naming
 /// `source` (nameSource()): "SOURCE: path i, vertex j: ...".
@@ -45,20 +39,28 @@ class GeometryCommands {
  public:
   explicit GeometryCommands(CLI::App& app);
 
-  /// Run the subcommand that was parsed, if any: read, compute, write the GeoJSON to stdout or
-  /// atomically to the -o file.
+  /// Run the subcommand that was parsed, if any: read (a file or "-"), compute feature by feature
+  /// (or dissolved), print warnings to stderr, write GeoJSON or WKT to stdout or atomically to
+  /// the -o file.
   /// @throws InvalidInputError on bad input (naming the file), Error when the output cannot be
   ///         written.
   void execute() const;
 
  private:
-  struct Simplify {
+  /// The options every command has: formats, and (regions only) ring order and --dissolve.
+  struct Common {
+    std::string output;
+    std::string format = "geojson";
+    std::string inputFormat = "auto";
+    std::string orientation = "rfc7946";
+    bool dissolve = false;
+  };
+  struct Simplify : Common {
     CLI::App* cmd = nullptr;
     std::string input;
     std::string rule = "evenodd";
-    std::string output;
   };
-  struct Clip {
+  struct Clip : Common {
     CLI::App* cmd = nullptr;
     std::string subject;
     std::string clip;
@@ -66,18 +68,18 @@ class GeometryCommands {
     std::string bothRule;
     std::string subjectRule;
     std::string clipRule;
-    std::string output;
   };
-  struct ClipLines {
+  struct ClipLines : Common {
     CLI::App* cmd = nullptr;
     std::string lines;
     std::string region;
     std::string part = "inside";
     std::string rule = "evenodd";
-    std::string output;
   };
 
   void addGridScale(CLI::App* cmd);
+  /// -o, --format, --input-format; with `regions` also --orientation and --dissolve.
+  static void addCommon(CLI::App* cmd, Common& options, bool regions);
 
   Grid grid_;
   Simplify simplify_;

@@ -50,6 +50,10 @@ std::optional<long> temporaryOwner(const std::string& filename) {
 }
 
 void writeFileAtomically(const fs::path& file, std::string_view bytes) {
+  // Said before anything is tried: the temporary would go to the folder above, and the rename's
+  // error (or the temporary's, in a folder the user cannot write) would hide the real reason.
+  std::error_code isDir;
+  if (fs::is_directory(file, isDir)) fail(file, "is a directory");
   static std::atomic<unsigned long> counter{0};
   const fs::path tmp = temporaryPath(file, static_cast<long>(::getpid()), counter.fetch_add(1));
   {

@@ -3,27 +3,20 @@
 #include <roiclip/io/geojson.hpp>
 
 #include <cmath>
-#include <cstdio>
-#include <fstream>
-#include <sstream>
 #include <utility>
 
 #include <nlohmann/json.hpp>
 
 #include <roiclip/io/atomic_file.hpp>
 
+#include "reading.hpp"
+
 namespace roiclip::io {
 namespace {
 
-using nlohmann::json;
-
-// The source is a field of the error; `where` (feature, polygon, ring, point) stays in the text.
-[[noreturn]] void fail(const std::string& source, const std::string& where,
-                       const std::string& problem) {
-  InputLocation location;
-  location.source = source;
-  throw InvalidInputError(location, (where.empty() ? "" : where + ": ") + problem);
-}
+// ordered_json keeps the key order of "properties" when a feature is written back.
+using json = nlohmann::ordered_json;
+using detail::fail;
 
 std::string typeName(const json& j) { return j.type_name(); }
 
@@ -40,44 +33,29 @@ json parseJson(const std::string& text, const std::string& source) {
   }
 }
 
-std::string readFile(const std::string& file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) fail(file, "", "cannot open file for reading");
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
-  if (in.bad()) fail(file, "", "read error");
-  return buffer.str();
-}
-
 // Reads rings and polylines and remembers how many paths came before, so a message can also give
 // the flat path index the core uses in its own messages.
 class PathReader {
  public:
   PathReader(const std::string& source, const ReadOptions& options)
-      : source_(source), options_(options) {}
+      : source_(source), checker_(source, options) {}
 
-  Path readRing(const json& ring, const std::string& where, bool dropClosingPoint) {
-    const std::string at = flatName(where);
+  Path readRing(const json& ring, const std::string& where) {
+    const std::string at = checker_.flatName(where);
     Path path = readPoints(ring, at);
-    if (dropClosingPoint && path.size() > 1 && path.front() == path.back()) path.pop_back();
-    if (!options_.allowDegenerateRings && distinctPoints(path) < 3) {
-      fail(source_, at, "ring has fewer than 3 distinct points");
-    }
-    ++pathCount_;
+    checker_.finishRing(path, at);
     return path;
   }
 
-  // An open polyline: every point kept, a repeated first point included (the core reads it as a
-  // loop). Equal points are not counted away: a zero-length line is valid and clips to nothing.
   Path readLine(const json& line, const std::string& where) {
-    const std::string at = flatName(where);
+    const std::string at = checker_.flatName(where);
     Path path = readPoints(line, at);
-    if (!options_.allowDegenerateRings && path.size() < 2) {
-      fail(source_, at, "line has fewer than 2 points");
-    }
-    ++pathCount_;
+    checker_.finishLine(path, at);
     return path;
   }
+
+  // One warning for all dropped z values, once the whole input is read.
+  void finish() const { checker_.reportWarnings(); }
 
   // Polygon coordinates: an array of rings, outer first.
   Paths readPolygon(const json& rings, const std::string& where) {
@@ -87,78 +65,43 @@ class PathReader {
     Paths out;
     out.reserve(rings.size());
     for (std::size_t r = 0; r < rings.size(); ++r) {
-      out.push_back(readRing(rings[r], where + ", ring " + std::to_string(r), true));
+      out.push_back(readRing(rings[r], where + ", ring " + std::to_string(r)));
     }
     return out;
   }
 
-  std::vector<Paths> readGeometry(const json& geometry, const std::string& where) {
-    std::vector<Paths> polygons;
-    if (geometry.is_null()) return polygons;  // GeoJSON allows features without geometry
-    if (!geometry.is_object()) fail(source_, where, "geometry must be an object or null");
-    const std::string type = memberType(geometry, where);
-    const auto coords = geometry.find("coordinates");
-    if (type == "Polygon" || type == "MultiPolygon") {
-      if (coords == geometry.end()) fail(source_, where, type + " without \"coordinates\"");
-    }
-    if (type == "Polygon") {
-      polygons.push_back(readPolygon(*coords, where + ", polygon 0"));
-    } else if (type == "MultiPolygon") {
-      if (!coords->is_array()) fail(source_, where, "MultiPolygon coordinates must be an array");
-      for (std::size_t p = 0; p < coords->size(); ++p) {
-        polygons.push_back(readPolygon((*coords)[p], where + ", polygon " + std::to_string(p)));
-      }
-    } else {
-      fail(source_, where,
-           "unsupported geometry type \"" + type + "\" (expected Polygon or MultiPolygon)");
-    }
-    return polygons;
+  // Polygon coordinates of a Polygon, MultiPolygon or GeometryCollection, appended to `out`.
+  void readGeometry(const json& geometry, const std::string& where, std::vector<Paths>& out) {
+    readGeometryOf(
+        geometry, where, "Polygon", "polygon", out,
+        [this](const json& rings, const std::string& at) { return readPolygon(rings, at); });
   }
 
   // Line coordinates of a LineString, MultiLineString or GeometryCollection, appended to `out`.
   void readLineGeometry(const json& geometry, const std::string& where, Paths& out) {
-    if (geometry.is_null()) return;
-    if (!geometry.is_object()) fail(source_, where, "geometry must be an object or null");
-    const std::string type = memberType(geometry, where);
-    if (type == "GeometryCollection") {
-      const auto members = geometry.find("geometries");
-      if (members == geometry.end() || !members->is_array()) {
-        fail(source_, where, "GeometryCollection without a \"geometries\" array");
-      }
-      for (std::size_t g = 0; g < members->size(); ++g) {
-        readLineGeometry((*members)[g], where + ", member " + std::to_string(g), out);
-      }
-      return;
-    }
-    if (type != "LineString" && type != "MultiLineString") {
-      fail(source_, where,
-           "unsupported geometry type \"" + type + "\" (expected LineString or MultiLineString)");
-    }
-    const auto coords = geometry.find("coordinates");
-    if (coords == geometry.end()) fail(source_, where, type + " without \"coordinates\"");
-    if (type == "LineString") {
-      out.push_back(readLine(*coords, where + ", line 0"));
-      return;
-    }
-    if (!coords->is_array()) fail(source_, where, "MultiLineString coordinates must be an array");
-    for (std::size_t l = 0; l < coords->size(); ++l) {
-      out.push_back(readLine((*coords)[l], where + ", line " + std::to_string(l)));
-    }
+    readGeometryOf(geometry, where, "LineString", "line", out,
+                   [this](const json& line, const std::string& at) { return readLine(line, at); });
   }
 
   std::vector<Feature> readGeoJson(const json& root) {
     std::vector<Feature> features;
-    forEachGeometry(root,
-                    [&](const json& geometry, const json* properties, const std::string& where) {
-                      Feature out;
-                      out.polygons = readGeometry(geometry, where);
-                      if (properties != nullptr && properties->is_object()) {
-                        for (const auto& [key, value] : properties->items()) {
-                          if (value.is_string()) out.properties[key] = value.get<std::string>();
-                        }
-                      }
-                      features.push_back(std::move(out));
-                    });
+    forEachGeometry(root, [&](const json& geometry, const json* feature, const std::string& where) {
+      Feature out;
+      readGeometry(geometry, where, out.polygons);
+      if (feature != nullptr) {
+        const auto id = feature->find("id");
+        if (id != feature->end()) out.id = id->dump();
+        const auto properties = feature->find("properties");
+        out.propertiesJson = properties == feature->end() ? "null" : properties->dump();
+        if (properties != feature->end() && properties->is_object()) {
+          for (const auto& [key, value] : properties->items()) {
+            if (value.is_string()) out.properties[key] = value.get<std::string>();
+          }
+        }
+      }
+      features.push_back(std::move(out));
+    });
+    finish();
     return features;
   }
 
@@ -167,6 +110,7 @@ class PathReader {
     forEachGeometry(root, [&](const json& geometry, const json*, const std::string& where) {
       readLineGeometry(geometry, where, lines);
     });
+    finish();
     return lines;
   }
 
@@ -177,15 +121,61 @@ class PathReader {
     Paths out;
     out.reserve(list.size());
     for (std::size_t p = 0; p < list.size(); ++p) {
-      pathCount_ = p;
+      checker_.setPathCount(p);
       const std::string where = "path " + std::to_string(p);
-      out.push_back(lines ? readLine(list[p], where) : readRing(list[p], where, true));
+      out.push_back(lines ? readLine(list[p], where) : readRing(list[p], where));
     }
+    finish();
     return out;
   }
 
  private:
-  // Calls visit(geometry, properties or nullptr, where) for each feature of a FeatureCollection,
+  // A `single` geometry (Polygon, LineString), its Multi form, or a GeometryCollection of them
+  // (collections may nest): read(coordinates, where) for each part ("polygon 2", "line 0"), the
+  // results appended to `out`. A null geometry (a feature without one) adds nothing.
+  template <class Out, class Read>
+  void readGeometryOf(const json& geometry, const std::string& where, const std::string& single,
+                      const char* part, Out& out, Read read) {
+    if (geometry.is_null()) return;
+    if (!geometry.is_object()) fail(source_, where, "geometry must be an object or null");
+    const std::string type = memberType(geometry, where);
+    const std::string multi = "Multi" + single;
+    if (type == "GeometryCollection") {
+      forEachMember(geometry, where, [&](const json& member, const std::string& at) {
+        readGeometryOf(member, at, single, part, out, read);
+      });
+      return;
+    }
+    if (type != single && type != multi) {
+      fail(source_, where,
+           "unsupported geometry type \"" + type + "\" (expected " + single + " or " + multi + ")");
+    }
+    const auto coords = geometry.find("coordinates");
+    if (coords == geometry.end()) fail(source_, where, type + " without \"coordinates\"");
+    const std::string name = where + ", " + part + " ";
+    if (type == single) {
+      out.push_back(read(*coords, name + "0"));
+      return;
+    }
+    if (!coords->is_array()) fail(source_, where, multi + " coordinates must be an array");
+    for (std::size_t i = 0; i < coords->size(); ++i) {
+      out.push_back(read((*coords)[i], name + std::to_string(i)));
+    }
+  }
+
+  // Calls visit(member, where) for each member of a GeometryCollection.
+  template <class Visit>
+  void forEachMember(const json& collection, const std::string& where, Visit visit) const {
+    const auto members = collection.find("geometries");
+    if (members == collection.end() || !members->is_array()) {
+      fail(source_, where, "GeometryCollection without a \"geometries\" array");
+    }
+    for (std::size_t g = 0; g < members->size(); ++g) {
+      visit((*members)[g], where + ", member " + std::to_string(g));
+    }
+  }
+
+  // Calls visit(geometry, feature or nullptr, where) for each feature of a FeatureCollection,
   // for a lone Feature, or for a bare geometry at the top level.
   template <class Visit>
   void forEachGeometry(const json& root, Visit visit) const {
@@ -196,8 +186,7 @@ class PathReader {
     const auto visitFeature = [&](const json& feature, const std::string& where) {
       const auto geometry = feature.find("geometry");
       if (geometry == feature.end()) fail(source_, where, "Feature without \"geometry\"");
-      const auto properties = feature.find("properties");
-      visit(*geometry, properties == feature.end() ? nullptr : &*properties, where);
+      visit(*geometry, &feature, where);
     };
     if (type == "FeatureCollection") {
       const auto list = root.find("features");
@@ -219,13 +208,7 @@ class PathReader {
     }
   }
 
-  // Nested GeoJSON rings and lines also get their flat index: the core's messages use it.
-  std::string flatName(const std::string& where) const {
-    return where.rfind("path ", 0) == 0 ? where
-                                        : where + " (path " + std::to_string(pathCount_) + ")";
-  }
-
-  Path readPoints(const json& points, const std::string& at) const {
+  Path readPoints(const json& points, const std::string& at) {
     if (!points.is_array()) {
       fail(source_, at, "expected an array of points, got " + typeName(points));
     }
@@ -247,11 +230,11 @@ class PathReader {
         if (!value.is_number()) {
           fail(source_, pointAt, std::string(axis) + " is not a number (" + typeName(value) + ")");
         }
-        xy[k] = value.get<double>();
         // JSON has no NaN or infinity and nlohmann rejects 1e999; checked anyway so that no
         // non-finite value can reach the core whatever the parser accepts.
-        if (!std::isfinite(xy[k])) fail(source_, pointAt, std::string(axis) + " is not finite");
+        xy[k] = checker_.coordinate(value.get<double>(), pointAt, axis);
       }
+      if (point.size() == 3) checker_.droppedZ();
       path.emplace_back(xy[0], xy[1]);
     }
     return path;
@@ -265,21 +248,8 @@ class PathReader {
     return type->get<std::string>();
   }
 
-  static std::size_t distinctPoints(const Path& path) {
-    // Rings are short in practice and this runs once per ring: a quadratic count is fine and
-    // keeps the original order untouched.
-    std::size_t count = 0;
-    for (std::size_t i = 0; i < path.size() && count < 3; ++i) {
-      bool seen = false;
-      for (std::size_t j = 0; j < i && !seen; ++j) seen = path[j] == path[i];
-      if (!seen) ++count;
-    }
-    return count;
-  }
-
   const std::string& source_;
-  const ReadOptions& options_;
-  std::size_t pathCount_ = 0;
+  detail::RingChecker checker_;
 };
 
 bool isPlain(const json& root) {
@@ -293,15 +263,16 @@ json ringJson(const Path& ring) {
   return out;
 }
 
-void writeTextAtomically(const std::string& text, const std::string& file) {
-  writeFileAtomically(file, text);
-}
+// JSON text kept by the reader (an id, a properties object) back as JSON; empty text is null.
+json kept(const std::string& text) { return text.empty() ? json() : json::parse(text); }
 
-json featureCollection(json geometry, json properties) {
+std::string oneFeatureCollection(json geometry, json properties, int indent) {
   json feature = {{"type", "Feature"},
                   {"properties", std::move(properties)},
                   {"geometry", std::move(geometry)}};
-  return {{"type", "FeatureCollection"}, {"features", json::array({std::move(feature)})}};
+  const json root = {{"type", "FeatureCollection"},
+                     {"features", json::array({std::move(feature)})}};
+  return root.dump(indent) + "\n";
 }
 
 }  // namespace
@@ -320,7 +291,7 @@ Paths parsePaths(const std::string& text, const std::string& source, const ReadO
 }
 
 Paths readPaths(const std::string& file, const ReadOptions& options) {
-  return parsePaths(readFile(file), file, options);
+  return parsePaths(readText(file), sourceName(file), options);
 }
 
 Paths parseLines(const std::string& text, const std::string& source, const ReadOptions& options) {
@@ -330,37 +301,58 @@ Paths parseLines(const std::string& text, const std::string& source, const ReadO
 }
 
 Paths readLines(const std::string& file, const ReadOptions& options) {
-  return parseLines(readFile(file), file, options);
+  return parseLines(readText(file), sourceName(file), options);
+}
+
+std::vector<Feature> detail::parseGeoJsonFeatures(const std::string& text,
+                                                  const std::string& source,
+                                                  const ReadOptions& options, bool acceptPlain) {
+  const json root = parseJson(text, source);
+  PathReader reader(source, options);
+  if (!isPlain(root)) return reader.readGeoJson(root);
+  if (!acceptPlain) fail(source, "", "expected GeoJSON, got a plain {\"paths\": ...} object");
+  Feature feature;
+  for (Path& path : reader.readPlain(root, false)) feature.polygons.push_back({std::move(path)});
+  return {std::move(feature)};
 }
 
 std::vector<Feature> parseFeatures(const std::string& text, const std::string& source,
                                    const ReadOptions& options) {
-  const json root = parseJson(text, source);
-  if (isPlain(root)) fail(source, "", "expected GeoJSON, got a plain {\"paths\": ...} object");
-  PathReader reader(source, options);
-  return reader.readGeoJson(root);
+  return detail::parseGeoJsonFeatures(text, source, options, false);
 }
 
 std::vector<Feature> readFeatures(const std::string& file, const ReadOptions& options) {
-  return parseFeatures(readFile(file), file, options);
+  return parseFeatures(readText(file), sourceName(file), options);
 }
 
-std::string toGeoJson(const PolygonSet& set, int indent) {
-  json polygons = json::array();
-  for (const Polygon& polygon : set.polygons) {
-    json rings = json::array();
-    rings.push_back(ringJson(polygon.outer));
-    for (const Path& hole : polygon.holes) rings.push_back(ringJson(hole));
-    polygons.push_back(std::move(rings));
+std::string featuresToGeoJson(const std::vector<Feature>& features, const WriteOptions& options) {
+  json list = json::array();
+  for (const Feature& feature : features) {
+    json polygons = json::array();
+    for (const Paths& polygon : feature.polygons) {
+      json rings = json::array();
+      for (std::size_t r = 0; r < polygon.size(); ++r) {
+        rings.push_back(ringJson(orientRing(polygon[r], r == 0, options.orientation)));
+      }
+      polygons.push_back(std::move(rings));
+    }
+    json out = {{"type", "Feature"}};
+    if (!feature.id.empty()) out["id"] = kept(feature.id);
+    out["properties"] = kept(feature.propertiesJson);
+    out["geometry"] = {{"type", "MultiPolygon"}, {"coordinates", std::move(polygons)}};
+    list.push_back(std::move(out));
   }
-  return featureCollection({{"type", "MultiPolygon"}, {"coordinates", std::move(polygons)}},
-                           {{"area", set.area()}, {"rings", set.ringCount()}})
-             .dump(indent) +
-         "\n";
+  const json root = {{"type", "FeatureCollection"}, {"features", std::move(list)}};
+  return root.dump(options.indent) + "\n";
 }
 
-void writeGeoJson(const PolygonSet& set, const std::string& file, int indent) {
-  writeTextAtomically(toGeoJson(set, indent), file);
+std::string toGeoJson(const PolygonSet& set, int indent, RingOrientation orientation) {
+  return featuresToGeoJson({toFeature(set)}, {orientation, indent});
+}
+
+void writeGeoJson(const PolygonSet& set, const std::string& file, int indent,
+                  RingOrientation orientation) {
+  writeFileAtomically(file, toGeoJson(set, indent, orientation));
 }
 
 std::string linesToGeoJson(const Paths& lines, int indent) {
@@ -374,14 +366,13 @@ std::string linesToGeoJson(const Paths& lines, int indent) {
     }
     coordinates.push_back(std::move(points));
   }
-  return featureCollection({{"type", "MultiLineString"}, {"coordinates", std::move(coordinates)}},
-                           {{"length", length}, {"lines", lines.size()}})
-             .dump(indent) +
-         "\n";
+  return oneFeatureCollection(
+      {{"type", "MultiLineString"}, {"coordinates", std::move(coordinates)}},
+      {{"length", length}, {"lines", lines.size()}}, indent);
 }
 
 void writeLinesGeoJson(const Paths& lines, const std::string& file, int indent) {
-  writeTextAtomically(linesToGeoJson(lines, indent), file);
+  writeFileAtomically(file, linesToGeoJson(lines, indent));
 }
 
 }  // namespace roiclip::io

@@ -131,7 +131,8 @@ TEST_F(Cli, SimplifyFillRule) {
 
 TEST_F(Cli, SimplifyToFile) {
   const fs::path out = dir_ / "result.geojson";
-  const CliRun r = run("simplify '" + kData + "frame.geojson' -o '" + out.string() + "'");
+  const CliRun r =
+      run("simplify --dissolve '" + kData + "frame.geojson' -o '" + out.string() + "'");
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_TRUE(r.out.empty());
   EXPECT_DOUBLE_EQ(properties(slurp(out)).at("area").get<double>(), 164.0);
@@ -150,7 +151,8 @@ TEST_F(Cli, ClipOperations) {
 
 TEST_F(Cli, ClipFillRulesSpecificOverridesGeneral) {
   const std::string twice = "'" + kData + "twice_wound.json'";
-  const std::string roi = "'" + kData + "roi.geojson'";
+  // roi.geojson is a Feature: --dissolve gives the one feature with "area" and "rings".
+  const std::string roi = "--dissolve '" + kData + "roi.geojson'";
   // The doubly wound square is empty under even-odd and the square [0,10]^2 otherwise.
   EXPECT_DOUBLE_EQ(area(run("clip " + twice + " " + roi)), 0.0);
   EXPECT_DOUBLE_EQ(area(run("clip --fill-rule nonzero " + twice + " " + roi)), 60.0);
@@ -378,6 +380,179 @@ TEST_F(Cli, ClipLinesUsageErrors) {
   EXPECT_NE(part.err.find("sideways"), std::string::npos) << part.err;
   EXPECT_EQ(run("clip-lines --fill-rule sometimes " + lines + " " + square).exitCode, 1);
   EXPECT_EQ(run("clip-lines --grid-scale 0 " + lines + " " + square).exitCode, 1);
+}
+
+// --- features, orientation, formats, streams, warnings ---
+
+json features(const std::string& text) { return json::parse(text).at("features"); }
+
+TEST_F(Cli, SimplifyKeepsEachFeatureWithItsIdAndProperties) {
+  const CliRun r = run("simplify '" + kData + "parcels.geojson'");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_TRUE(r.err.empty()) << r.err;
+  const json f = features(r.out);
+  ASSERT_EQ(f.size(), 3u);
+  EXPECT_EQ(f[0].at("id"), "a");
+  EXPECT_EQ(f[0].at("properties"),
+            json::parse(R"({"name":"left","area_m2":12.5,"tags":["x","y"],"owner":null})"));
+  EXPECT_EQ(f[1].at("id"), 7);
+  EXPECT_EQ(f[1].at("properties").at("nested"), json::parse(R"({"b":1,"a":[true,false]})"));
+  EXPECT_FALSE(f[2].contains("id"));
+  EXPECT_TRUE(f[2].at("properties").is_null());
+  // The key order of the input is kept.
+  EXPECT_NE(r.out.find(R"("properties":{"name":"right","n":3,"nested":{"b":1,"a":[true,false]}})"),
+            std::string::npos)
+      << r.out;
+  EXPECT_EQ(f[2].at("geometry").at("coordinates").size(), 2u);  // from a GeometryCollection
+}
+
+TEST_F(Cli, ClipEachSubjectFeatureByTheUnionOfTheClipFeatures) {
+  const std::string files = "'" + kData + "parcels.geojson' '" + kData + "two_rois.geojson'";
+  const CliRun r = run("clip " + files);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const json f = features(r.out);
+  ASSERT_EQ(f.size(), 3u);
+  EXPECT_EQ(f[0].at("id"), "a");
+  EXPECT_EQ(f[1].at("properties").at("name"), "right");
+  EXPECT_EQ(f[0].at("geometry").at("coordinates"),
+            json::parse("[[[[2,10],[2,0],[6,0],[6,10],[2,10]]]]"));
+  EXPECT_TRUE(f[2].at("geometry").at("coordinates").empty());
+  // --dissolve: today's single feature (even-odd over all rings: ROI A and B cancel where they
+  // overlap).
+  const CliRun one = run("clip --dissolve " + files);
+  ASSERT_EQ(one.exitCode, 0) << one.err;
+  EXPECT_DOUBLE_EQ(area(one), 65.0);
+  EXPECT_EQ(properties(one.out).at("rings").get<int>(), 2);
+}
+
+TEST_F(Cli, OrientationRfc7946ByDefaultOpenCvOnRequest) {
+  const std::string frame = "'" + kData + "frame.geojson' --dissolve";
+  const auto firstRings = [](const CliRun& r) {
+    return json::parse(r.out).at("features")[0].at("geometry").at("coordinates")[0];
+  };
+  const json rfc = firstRings(run("simplify " + frame));
+  EXPECT_EQ(rfc, json::parse("[[[0,10],[0,0],[10,0],[10,10],[0,10]],"
+                             "[[8,8],[8,2],[2,2],[2,8],[8,8]]]"));
+  EXPECT_EQ(firstRings(run("simplify --orientation rfc7946 " + frame)), rfc);
+  EXPECT_EQ(firstRings(run("simplify --orientation OpenCV " + frame)),
+            json::parse("[[[0,10],[10,10],[10,0],[0,0],[0,10]],"
+                        "[[8,8],[2,8],[2,2],[8,2],[8,8]]]"));
+  EXPECT_EQ(run("simplify --orientation clockwise " + frame).exitCode, 1);
+}
+
+TEST_F(Cli, WktInAndOut) {
+  const CliRun r = run("simplify --format wkt '" + kData + "frame.wkt'");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(r.out,
+            "MULTIPOLYGON(((0 10,0 0,10 0,10 10,0 10),(8 8,8 2,2 2,2 8,8 8)),"
+            "((20 10,20 0,30 0,30 10,20 10)))\n");
+  // WKT in, GeoJSON out (detected from the text), and --input-format forcing a reader.
+  EXPECT_DOUBLE_EQ(area(run("simplify '" + kData + "frame.wkt'")), 164.0);
+  expectBadInput(run("simplify --input-format geojson '" + kData + "frame.wkt'"), "frame.wkt",
+                 "not valid JSON");
+  // Clip with WKT written to a file, read back by the next command.
+  const fs::path out = dir_ / "clipped.wkt";
+  const CliRun clipped = run("clip --format wkt '" + kData + "frame.wkt' '" + kData +
+                             "roi.geojson' -o '" + out.string() + "'");
+  ASSERT_EQ(clipped.exitCode, 0) << clipped.err;
+  EXPECT_EQ(slurp(out).rfind("MULTIPOLYGON(", 0), 0u) << slurp(out);
+  const CliRun back = run("simplify '" + out.string() + "'");
+  // frame.wkt's first square without its hole, within the ROI's x in [2, 8]: 60 - 36.
+  EXPECT_DOUBLE_EQ(area(back), 24.0);
+  const CliRun lines =
+      run("clip-lines --format wkt '" + kData + "lines_cross.geojson' '" + kData + "frame.wkt'");
+  ASSERT_EQ(lines.exitCode, 0) << lines.err;
+  EXPECT_EQ(lines.out.rfind("MULTILINESTRING(", 0), 0u) << lines.out;
+}
+
+TEST_F(Cli, DashIsStandardInputAndOutput) {
+  const CliRun in = run("simplify --dissolve - < '" + kData + "frame.geojson'");
+  ASSERT_EQ(in.exitCode, 0) << in.err;
+  EXPECT_DOUBLE_EQ(area(in), 164.0);
+  const CliRun out = run("clip - '" + kData + "roi.geojson' -o - < '" + kData + "bowtie.json'");
+  ASSERT_EQ(out.exitCode, 0) << out.err;
+  EXPECT_DOUBLE_EQ(area(out), 18.0);
+  EXPECT_FALSE(fs::exists(dir_ / "-"));
+  const CliRun wkt =
+      run("clip-lines - '" + kData + "square.geojson' < '" + kData + "lines_cross.geojson'");
+  ASSERT_EQ(wkt.exitCode, 0) << wkt.err;
+  EXPECT_DOUBLE_EQ(properties(wkt.out).at("length").get<double>(), 26.0);
+  // Errors name standard input; it cannot be both operands.
+  expectBadInput(run("simplify - < '" + kData + "bad_syntax.json'"), "<stdin>: ", "not valid JSON");
+  expectBadInput(run("clip - - < '" + kData + "square.geojson'"), "<stdin>", "only one input");
+}
+
+TEST_F(Cli, ZCoordinatesAreDroppedWithAWarning) {
+  const CliRun r = run("simplify '" + kData + "square_z.wkt'");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_DOUBLE_EQ(area(r), 100.0);
+  EXPECT_EQ(r.err, "roiclip: warning: " + kData +
+                       "square_z.wkt: ignored the z coordinate of 5 points (roiclip is 2-D)\n");
+  const fs::path z = dir_ / "z.geojson";
+  std::ofstream(z) << R"({"type":"Polygon","coordinates":[[[0,0,3],[4,0,3],[4,3,3],[0,0,3]]]})";
+  const CliRun geojson = run("simplify '" + z.string() + "'");
+  EXPECT_EQ(geojson.exitCode, 0);
+  EXPECT_NE(geojson.err.find("z.geojson: ignored the z coordinate of 4 points"), std::string::npos)
+      << geojson.err;
+}
+
+TEST_F(Cli, GeometryCollectionOfPolygons) {
+  const fs::path gc = dir_ / "gc.geojson";
+  std::ofstream(gc) << R"({"type":"GeometryCollection","geometries":[
+      {"type":"Polygon","coordinates":[[[0,0],[4,0],[4,4],[0,4],[0,0]]]},
+      {"type":"GeometryCollection","geometries":[
+        {"type":"MultiPolygon","coordinates":[[[[10,0],[12,0],[12,2],[10,0]]]]}]}]})";
+  const CliRun r = run("simplify '" + gc.string() + "'");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_DOUBLE_EQ(area(r), 16.0 + 2.0);
+  EXPECT_EQ(properties(r.out).at("rings").get<int>(), 2);
+  const fs::path wkt = dir_ / "gc.wkt";
+  std::ofstream(wkt) << "GEOMETRYCOLLECTION (POLYGON ((0 0, 4 0, 4 4, 0 4, 0 0)))";
+  EXPECT_DOUBLE_EQ(area(run("simplify '" + wkt.string() + "'")), 16.0);
+}
+
+TEST_F(Cli, OutputDirectoryIsADirectory) {
+  for (const char* command : {"simplify '", "clip-lines '"}) {
+    const std::string input = std::string(command) == "simplify '"
+                                  ? kData + "square.geojson'"
+                                  : kData + "lines_cross.geojson' '" + kData + "square.geojson'";
+    const CliRun r = run(command + input + " -o '" + dir_.string() + "'");
+    EXPECT_EQ(r.exitCode, 3) << r.err;
+    EXPECT_EQ(r.err, "roiclip: error: cannot write " + dir_.string() + ": is a directory\n");
+    EXPECT_TRUE(r.out.empty());
+  }
+  // No temporary is left in the folder above.
+  for (const auto& e : fs::directory_iterator(dir_.parent_path())) {
+    EXPECT_NE(e.path().filename().string().rfind("." + dir_.filename().string() + ".tmp.", 0), 0u)
+        << e.path();
+  }
+  expectBadInput(run("simplify '" + dir_.string() + "'"), dir_.string() + ": is a directory",
+                 "directory");
+}
+
+TEST_F(Cli, SnappingWarning) {
+  // 0.123456789 px is 31.605 grid units at 1/256 px: snapping moves it by 0.395 of a step.
+  const CliRun r = run("simplify '" + kData + "gis_square.geojson'");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.err.find("roiclip: warning: " + kData +
+                       "gis_square.geojson: snapping to the 1/256 px grid moved 2 of 4 vertices "
+                       "by more than 1/4 grid step"),
+            std::string::npos)
+      << r.err;
+  EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << "one line: " << r.err;
+  // 3/2048 px moves by 3/8 of a 1/256 px step (a warning); on a 1/2048 px grid it does not move.
+  const fs::path fine = dir_ / "fine.json";
+  std::ofstream(fine) << R"({"paths": [[[0.00146484375, 0], [5, 0], [5, 5]]]})";
+  EXPECT_NE(run("simplify '" + fine.string() + "'").err.find("moved 1 of 3 vertices"),
+            std::string::npos);
+  const CliRun finer = run("simplify --grid-scale 2048 '" + fine.string() + "'");
+  EXPECT_EQ(finer.exitCode, 0) << finer.err;
+  EXPECT_TRUE(finer.err.empty()) << finer.err;
+  // Only the operand whose vertices move warns.
+  const CliRun clip = run("clip '" + kData + "square.geojson' '" + kData + "gis_square.geojson'");
+  EXPECT_EQ(clip.exitCode, 0) << clip.err;
+  EXPECT_NE(clip.err.find("gis_square.geojson: snapping"), std::string::npos) << clip.err;
+  EXPECT_EQ(clip.err.find("snapping"), clip.err.rfind("snapping")) << clip.err;
 }
 
 }  // namespace

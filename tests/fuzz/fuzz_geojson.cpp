@@ -1,4 +1,5 @@
-// libFuzzer target: the roiclip::io readers (parsePaths, parseFeatures) on the bytes as text.
+// libFuzzer target: the roiclip::io readers (parsePaths, parseFeatures, the WKT readers) on the
+// bytes as text.
 // Only roiclip::Error may escape them. Whatever parses is also simplified (when small) and the
 // GeoJSON written for the result must read back with the same number of rings.
 #include <cstddef>
@@ -6,6 +7,7 @@
 #include <string>
 
 #include <roiclip/io/geojson.hpp>
+#include <roiclip/io/wkt.hpp>
 
 #include "fuzz_support.hpp"
 
@@ -22,6 +24,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         }
       }
     });
+    fuzz::expectDocumentedErrors("parseWktFeatures",
+                                 [&] { io::parseWktFeatures(text, "<fuzz>", options); });
+    fuzz::expectDocumentedErrors("parseWktLines",
+                                 [&] { io::parseWktLines(text, "<fuzz>", options); });
     Paths paths;
     bool parsed = false;
     fuzz::expectDocumentedErrors("parsePaths", [&] {

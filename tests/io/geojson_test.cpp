@@ -12,6 +12,8 @@
 
 #include <roiclip/io/geojson.hpp>
 
+#include "expect_invalid.hpp"
+
 namespace roiclip::io {
 namespace {
 
@@ -19,21 +21,6 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 
 const std::string kData = std::string(ROICLIP_TEST_DATA) + "/io/";
-
-// Runs `f`, requires an InvalidInputError and every fragment in its message.
-void expectInvalid(const std::function<void()>& f, std::initializer_list<std::string> fragments) {
-  try {
-    f();
-    ADD_FAILURE() << "no InvalidInputError thrown";
-  } catch (const InvalidInputError& e) {
-    const std::string message = e.what();
-    for (const std::string& fragment : fragments) {
-      EXPECT_NE(message.find(fragment), std::string::npos)
-          << "message \"" << message << "\" lacks \"" << fragment << "\"";
-    }
-    EXPECT_EQ(message.find('\n'), std::string::npos) << "message must be one line: " << message;
-  }
-}
 
 std::string uniqueTempDir(const std::string& name) {
   // The pid keeps concurrent runs of the suite (several builds on one machine) apart.
@@ -113,7 +100,7 @@ TEST(ReadFeatures, RejectsPlainPaths) {
 TEST(ToGeoJson, FeatureCollectionWithClosedRingsAreaAndRingCount) {
   const Paths frame = readPaths(kData + "frame.geojson");
   const PolygonSet set = simplify(frame, FillRule::EvenOdd);
-  const json root = json::parse(toGeoJson(set));
+  const json root = json::parse(toGeoJson(set, -1, RingOrientation::OpenCv));
   EXPECT_EQ(root.at("type"), "FeatureCollection");
   ASSERT_EQ(root.at("features").size(), 1u);
   const json& feature = root.at("features")[0];
@@ -136,8 +123,23 @@ TEST(ToGeoJson, FeatureCollectionWithClosedRingsAreaAndRingCount) {
     }
   }
   // Reading the output back gives the same region, with the same orientations.
-  const Paths back = parsePaths(toGeoJson(set, 2));
+  const Paths back = parsePaths(toGeoJson(set, 2, RingOrientation::OpenCv));
   EXPECT_EQ(back, set.toPaths());
+}
+
+TEST(ToGeoJson, Rfc7946OrderByDefault) {
+  const PolygonSet set = simplify(readPaths(kData + "frame.geojson"), FillRule::EvenOdd);
+  const Paths back = parsePaths(toGeoJson(set));
+  const Paths native = set.toPaths();
+  ASSERT_EQ(back.size(), native.size());
+  for (std::size_t r = 0; r < back.size(); ++r) {
+    // The same ring, reversed: exterior rings positive, holes negative.
+    EXPECT_DOUBLE_EQ(signedArea(back[r]), -signedArea(native[r]));
+    EXPECT_EQ(back[r].front(), native[r].front()) << "the first point stays first";
+  }
+  EXPECT_GT(signedArea(back[0]), 0.0);  // polygon 0's exterior
+  EXPECT_LT(signedArea(back[1]), 0.0);  // its hole
+  EXPECT_DOUBLE_EQ(simplify(back, FillRule::NonZero).area(), set.area());
 }
 
 TEST(ToGeoJson, EmptySetIsAnEmptyMultiPolygon) {

@@ -18,7 +18,8 @@ namespace roiclip::io {
 
 /// Write `bytes` to `file` atomically (temporary file in the same folder, then rename).
 /// The folder must exist. On failure no temporary is left and `file` is unchanged.
-/// @throws Error naming `file` (never the temporary) and the reason.
+/// @throws Error naming `file` (never the temporary) and the reason ("is a directory" when `file`
+///         is one).
 void writeFileAtomically(const std::filesystem::path& file, std::string_view bytes);
 
 /// The temporary name writeFileAtomically() uses for `file` in process `pid` for its `counter`th

@@ -1,28 +1,21 @@
 // roiclip::io: reading and writing path sets and open polylines as GeoJSON or plain JSON.
 //
 // Coordinates are taken as they are (no projection): x = first number, y = second number, in the
-// same y-down pixel convention as the rest of roiclip (see roiclip/geometry.hpp).
+// same y-down pixel convention as the rest of roiclip (see roiclip/geometry.hpp). A third (z)
+// coordinate is dropped (a Warning in ReadOptions::warnings). Files named "-" are standard input.
 #pragma once
 
-#include <map>
 #include <string>
 #include <vector>
 
+#include <roiclip/io/feature.hpp>
 #include <roiclip/roiclip.hpp>
 
 namespace roiclip::io {
 
-/// How strictly rings are checked while reading.
-struct ReadOptions {
-  /// When false (the default), a ring with fewer than 3 distinct points is an InvalidInputError,
-  /// and so is a polyline with fewer than 2 points (parseLines()). When true, such rings and lines
-  /// are kept as they are (the core ignores them); conformance data from other projects contains
-  /// them on purpose.
-  bool allowDegenerateRings = false;
-};
-
 /// Read a path set from text holding either
-///  - GeoJSON: a Polygon, MultiPolygon, Feature or FeatureCollection; every ring (outer or inner)
+///  - GeoJSON: a Polygon, MultiPolygon, GeometryCollection of them (collections may nest), Feature
+///    or FeatureCollection; every ring (outer or inner)
 ///    becomes one closed path taken as-is, so the fill rule alone decides what is inside; a
 ///    repeated closing point is dropped; or
 ///  - plain JSON: {"paths": [[[x, y], ...], ...]}; the last point need not repeat the first (if
@@ -63,33 +56,36 @@ Paths parseLines(const std::string& text, const std::string& source = "<string>"
 /// be read; the message names the file.
 Paths readLines(const std::string& file, const ReadOptions& options = {});
 
-/// A GeoJSON feature with its structure kept: a list of polygons, each a list of rings (ring 0
-/// the outer ring, then the inner rings), rings without the repeated closing point.
-struct Feature {
-  std::vector<Paths> polygons;
-  /// The feature's properties whose values are strings (others are not kept).
-  std::map<std::string, std::string> properties;
-};
-
-/// Read GeoJSON keeping its structure. A FeatureCollection gives one Feature per feature; a lone
-/// Feature, Polygon or MultiPolygon gives one Feature. Plain {"paths": ...} JSON is rejected.
-/// Errors as parsePaths().
+/// Read GeoJSON keeping its structure. A FeatureCollection gives one Feature per feature (with its
+/// "id" and "properties" as JSON text); a lone Feature, Polygon, MultiPolygon or
+/// GeometryCollection gives one Feature (a bare geometry: without properties). Plain
+/// {"paths": ...} JSON is rejected (parseAnyFeatures() takes it). Errors as parsePaths().
 std::vector<Feature> parseFeatures(const std::string& text, const std::string& source = "<string>",
                                    const ReadOptions& options = {});
 /// parseFeatures() on the contents of a file.
 std::vector<Feature> readFeatures(const std::string& file, const ReadOptions& options = {});
 
-/// A PolygonSet as GeoJSON text: a FeatureCollection with one Feature whose geometry is a
-/// MultiPolygon (each polygon: outer ring, then its holes; every ring closed by repeating its first
-/// point, as GeoJSON requires; ring orientation as in the PolygonSet, i.e. outer rings with a
-/// negative shoelace sum) and properties "area" (PolygonSet::area()) and "rings" (ringCount()).
+/// Features as GeoJSON text: a FeatureCollection with one Feature per feature, in order, each with
+/// its "id" (when it has one), its "properties" as they were read (null when it has none) and a
+/// MultiPolygon geometry (each polygon: outer ring, then its holes; every ring closed by
+/// repeating its first point, as GeoJSON requires; ring order as options.orientation asks,
+/// RFC 7946 by default).
+std::string featuresToGeoJson(const std::vector<Feature>& features,
+                              const WriteOptions& options = {});
+
+/// A PolygonSet as GeoJSON text: featuresToGeoJson({toFeature(set)}), i.e. a FeatureCollection
+/// with one Feature whose geometry is a MultiPolygon and whose properties are "area"
+/// (PolygonSet::area()) and "rings" (ringCount()). Rings in RFC 7946 order unless `orientation`
+/// says otherwise (RingOrientation::OpenCv: as in the PolygonSet).
 /// @param indent spaces per indentation level, or -1 for a single line.
-std::string toGeoJson(const PolygonSet& set, int indent = -1);
+std::string toGeoJson(const PolygonSet& set, int indent = -1,
+                      RingOrientation orientation = RingOrientation::Rfc7946);
 
 /// Write toGeoJson(set) to `file` atomically: the text goes to a temporary file in the same folder
 /// which is then renamed, so a failure never leaves a partial `file`.
-/// @throws Error when the file cannot be written.
-void writeGeoJson(const PolygonSet& set, const std::string& file, int indent = -1);
+/// @throws Error naming `file` when it cannot be written (a missing folder, a directory).
+void writeGeoJson(const PolygonSet& set, const std::string& file, int indent = -1,
+                  RingOrientation orientation = RingOrientation::Rfc7946);
 
 /// Polylines (e.g. clipLines() output) as GeoJSON text: a FeatureCollection with one Feature
 /// whose geometry is a MultiLineString (one line string per polyline, points as they are) and

@@ -1,0 +1,217 @@
+// roiclip::io features: ids and properties kept through reading, the feature-wise operations and
+// writing; ring orientation; format detection; the snapping check; warnings for z coordinates.
+#include <unistd.h>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <roiclip/io/atomic_file.hpp>
+#include <roiclip/io/feature.hpp>
+#include <roiclip/io/geojson.hpp>
+
+namespace roiclip::io {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+const std::string kData = std::string(ROICLIP_TEST_DATA) + "/io/";
+
+// Even-odd: the parcels file winds its hole the same way as its outer ring.
+double area(const Feature& feature) {
+  return simplify(allRings({feature}), FillRule::EvenOdd).area();
+}
+
+TEST(ReadFeatures, KeepIdAndEveryPropertyAsJsonText) {
+  const std::vector<Feature> features = readFeatures(kData + "parcels.geojson");
+  ASSERT_EQ(features.size(), 3u);
+  EXPECT_EQ(features[0].id, "\"a\"");
+  EXPECT_EQ(features[0].propertiesJson,
+            R"({"name":"left","area_m2":12.5,"tags":["x","y"],"owner":null})");
+  EXPECT_EQ(features[0].properties.at("name"), "left");  // string values, as before
+  EXPECT_EQ(features[0].properties.count("area_m2"), 0u);
+  EXPECT_EQ(features[1].id, "7");
+  EXPECT_EQ(features[1].propertiesJson,
+            R"({"name":"right","n":3,"nested":{"b":1,"a":[true,false]}})");
+  EXPECT_EQ(features[2].id, "");
+  EXPECT_EQ(features[2].propertiesJson, "null");
+  // A bare geometry has no feature, hence no properties at all (not even null).
+  EXPECT_EQ(readFeatures(kData + "square.geojson")[0].propertiesJson, "");
+}
+
+TEST(ReadFeatures, GeometryCollectionOfPolygonsNestedToo) {
+  const std::vector<Feature> features = readFeatures(kData + "parcels.geojson");
+  ASSERT_EQ(features[2].polygons.size(), 2u);  // a Polygon and a nested MultiPolygon
+  EXPECT_DOUBLE_EQ(area(features[2]), 4.0 + 0.5);
+  // parsePaths() takes them too; a line in a polygon collection is still refused.
+  EXPECT_EQ(readPaths(kData + "parcels.geojson").size(), 5u);
+  EXPECT_THROW(parsePaths(R"({"type":"GeometryCollection","geometries":[
+                 {"type":"LineString","coordinates":[[0,0],[1,1]]}]})"),
+               InvalidInputError);
+}
+
+TEST(FeaturesToGeoJson, IdsAndPropertiesRoundTripInOrder) {
+  const std::vector<Feature> features = readFeatures(kData + "parcels.geojson");
+  const std::string text = featuresToGeoJson(features);
+  const std::vector<Feature> back = parseFeatures(text);
+  ASSERT_EQ(back.size(), features.size());
+  for (std::size_t f = 0; f < back.size(); ++f) {
+    EXPECT_EQ(back[f].id, features[f].id);
+    EXPECT_EQ(back[f].propertiesJson, features[f].propertiesJson);  // key order kept
+    EXPECT_DOUBLE_EQ(area(back[f]), area(features[f]));
+  }
+  const json root = json::parse(text);
+  EXPECT_FALSE(root.at("features")[2].contains("id"));
+  EXPECT_TRUE(root.at("features")[2].at("properties").is_null());
+}
+
+TEST(SimplifyFeatures, OneResultPerFeatureWithItsIdAndProperties) {
+  const std::vector<Feature> features = readFeatures(kData + "parcels.geojson");
+  const std::vector<Feature> result = simplifyFeatures(features, "parcels", FillRule::EvenOdd);
+  ASSERT_EQ(result.size(), 3u);
+  EXPECT_EQ(result[0].id, "\"a\"");
+  EXPECT_EQ(result[1].propertiesJson, features[1].propertiesJson);
+  EXPECT_EQ(result[1].properties.at("name"), "right");
+  EXPECT_DOUBLE_EQ(area(result[0]), 60.0);
+  EXPECT_DOUBLE_EQ(area(result[1]), 60.0 - 4.0);
+  // Dissolved: one feature, the summary properties.
+  const std::vector<Feature> one = simplifyFeatures({dissolve(features)}, "p", FillRule::EvenOdd);
+  ASSERT_EQ(one.size(), 1u);
+  EXPECT_EQ(one[0].id, "");
+  EXPECT_EQ(json::parse(one[0].propertiesJson),
+            json::parse(R"({"area":120.5,"rings":4})"));  // a and 7 merge
+}
+
+TEST(ClipFeatures, EachSubjectFeatureByTheUnionOfTheClipFeatures) {
+  const std::vector<Feature> parcels = readFeatures(kData + "parcels.geojson");
+  const std::vector<Feature> rois = readFeatures(kData + "two_rois.geojson");
+  const std::vector<Feature> result = clipFeatures(ClipOp::Intersection, parcels, "p", rois, "r",
+                                                   FillRule::EvenOdd, FillRule::EvenOdd);
+  ASSERT_EQ(result.size(), 3u);
+  // Parcel a = [0,6]x[0,10], ROI A = [2,8]x[-1,11], ROI B = [5,14]x[5,11]: the part of a in
+  // A or B is [2,6]x[0,10] (A and B overlap; their union counts the overlap once, where one
+  // even-odd path set would cancel it).
+  EXPECT_DOUBLE_EQ(area(result[0]), 40.0);
+  EXPECT_DOUBLE_EQ(area(result[1]), 20.0 + 20.0);
+  EXPECT_TRUE(result[2].polygons.empty());
+  EXPECT_EQ(result[1].id, "7");
+  EXPECT_EQ(result[2].propertiesJson, "null");
+  // Dissolved, as before: every ring of each operand in one path set.
+  const std::vector<Feature> one =
+      clipFeatures(ClipOp::Intersection, {dissolve(parcels)}, "p", {dissolve(rois)}, "r",
+                   FillRule::EvenOdd, FillRule::EvenOdd);
+  ASSERT_EQ(one.size(), 1u);
+  EXPECT_DOUBLE_EQ(area(one[0]), intersect(allRings(parcels), allRings(rois)).area());
+}
+
+TEST(ClipFeatures, CoreErrorsNameTheFileAndTheFlatPathIndex) {
+  const std::vector<Feature> parcels = readFeatures(kData + "parcels.geojson");
+  std::vector<Feature> far = parcels;
+  far[1].polygons[0][0][1].x = 5e6;  // feature 1, ring 0 is path 1 of the file
+  try {
+    clipFeatures(ClipOp::Intersection, parcels, "p.json", far, "far.json", FillRule::EvenOdd,
+                 FillRule::EvenOdd);
+    ADD_FAILURE() << "no error";
+  } catch (const InvalidInputError& e) {
+    EXPECT_EQ(e.location().source, "far.json");
+    EXPECT_EQ(e.location().operand, Operand::Clip);
+    EXPECT_EQ(e.location().path, 1u);
+    EXPECT_EQ(e.location().vertex, 1u);
+  }
+  try {
+    simplifyFeatures(far, "far.json", FillRule::EvenOdd);
+    ADD_FAILURE() << "no error";
+  } catch (const InvalidInputError& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("far.json: path 1, vertex 1: x = ", 0), 0u) << e.what();
+  }
+}
+
+TEST(OrientRing, Rfc7946ExteriorsPositiveHolesNegativeOpenCvTheOpposite) {
+  const Path positive = {{0, 0}, {4, 0}, {4, 3}};  // shoelace > 0
+  const Path negative = orientRing(positive, false, RingOrientation::Rfc7946);
+  EXPECT_EQ(negative, (Path{{0, 0}, {4, 3}, {4, 0}}));
+  EXPECT_EQ(orientRing(positive, true, RingOrientation::Rfc7946), positive);
+  EXPECT_EQ(orientRing(positive, true, RingOrientation::OpenCv), negative);
+  EXPECT_EQ(orientRing(negative, false, RingOrientation::OpenCv), positive);
+  const Path flat = {{0, 0}, {1, 1}, {2, 2}};
+  EXPECT_EQ(orientRing(flat, true, RingOrientation::OpenCv), flat);
+  EXPECT_EQ(parseRingOrientation("OpenCV"), RingOrientation::OpenCv);
+  EXPECT_THROW(parseRingOrientation("clockwise"), InvalidInputError);
+}
+
+TEST(ParseAnyFeatures, DetectsTheFormatFromTheText) {
+  EXPECT_EQ(parseAnyFeatures("  POLYGON((0 0, 1 0, 1 1, 0 0))").at(0).polygons.size(), 1u);
+  EXPECT_EQ(parseAnyFeatures("\n{\"paths\": [[[0,0],[1,0],[1,1]], [[5,5],[6,5],[6,6]]]}")
+                .at(0)
+                .polygons.size(),
+            2u);
+  EXPECT_THROW(parseAnyFeatures("POLYGON((0 0, 1 0, 1 1, 0 0))", "x", Format::GeoJson),
+               InvalidInputError);
+  EXPECT_THROW(parseAnyFeatures("{}", "x", Format::Wkt), InvalidInputError);
+  EXPECT_EQ(parseFormat("WKT"), Format::Wkt);
+  EXPECT_THROW(parseFormat("shp"), InvalidInputError);
+}
+
+TEST(ReadOptions, ZCoordinatesAreDroppedWithOneWarning) {
+  std::vector<Warning> warnings;
+  ReadOptions options;
+  options.warnings = &warnings;
+  const Paths paths = parsePaths(
+      R"({"type":"Polygon","coordinates":[[[0,0,1],[4,0,1],[4,3,2],[0,0,1]]]})", "z.json", options);
+  EXPECT_EQ(paths, (Paths{{{0, 0}, {4, 0}, {4, 3}}}));
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_EQ(warnings[0].what(), "z.json: ignored the z coordinate of 4 points (roiclip is 2-D)");
+  warnings.clear();
+  parseLines(R"({"type":"LineString","coordinates":[[0,0],[4,0]]})", "flat.json", options);
+  EXPECT_TRUE(warnings.empty());
+}
+
+TEST(SnapWarnings, PixelCoordinatesNoneGisCoordinatesOne) {
+  const Grid grid;  // 1/256 px
+  EXPECT_TRUE(snapWarnings(readPaths(kData + "frame.geojson"), "frame", grid).empty());
+  EXPECT_TRUE(snapWarnings({{{0.5, 0.25}, {1.0 / 256, 3}, {7, 7}}}, "s", grid).empty());
+  // 0.2 px is 51.2 units: moved by 0.2 units, not counted; 0.123456789 px moves by 0.395 units.
+  const SnapShift shift = measureSnapShift(readPaths(kData + "gis_square.geojson"), grid);
+  EXPECT_EQ(shift.vertices, 4u);
+  EXPECT_EQ(shift.moved, 2u);
+  EXPECT_NEAR(shift.largest, 0.3950 / 256, 1e-5);
+  EXPECT_EQ(shift.vertex, 0u);
+  const std::vector<Warning> w = snapWarnings(readPaths(kData + "gis_square.geojson"), "g", grid);
+  ASSERT_EQ(w.size(), 1u);
+  EXPECT_EQ(w[0].what().rfind("g: snapping to the 1/256 px grid moved 2 of 4 vertices", 0), 0u)
+      << w[0].what();
+  // A grid fine enough for the digits there are: no warning.
+  EXPECT_TRUE(snapWarnings({{{0.2, 0.2}, {1, 0}, {1, 1}}}, "f", Grid{1024.0 * 1024 * 64}).empty());
+}
+
+TEST(WriteFileAtomically, ADirectoryIsSaidToBeOne) {
+  const fs::path dir =
+      fs::temp_directory_path() / ("roiclip_features_test_dir_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  try {
+    writeFileAtomically(dir, "text");
+    ADD_FAILURE() << "no error";
+  } catch (const Error& e) {
+    EXPECT_EQ(std::string(e.what()), "cannot write " + dir.string() + ": is a directory");
+  }
+  EXPECT_TRUE(fs::is_directory(dir));
+  std::size_t entries = 0;
+  for ([[maybe_unused]] const auto& entry : fs::directory_iterator(dir.parent_path())) {
+    entries += entry.path().filename().string().rfind("." + dir.filename().string(), 0) == 0;
+  }
+  EXPECT_EQ(entries, 0u) << "no temporary left next to it";
+  try {
+    readText(dir.string());
+    ADD_FAILURE() << "no error";
+  } catch (const InvalidInputError& e) {
+    EXPECT_EQ(std::string(e.what()), dir.string() + ": is a directory");
+  }
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace roiclip::io
