@@ -79,6 +79,15 @@ struct PolygonSet {
   [[nodiscard]] Paths toPaths() const;
 };
 
+/// The fill rule that reads a PolygonSet's rings (PolygonSet::toPaths()) as its region, wherever
+/// roiclip takes a PolygonSet as input (clip() operands, opencv::rasterize()). In a PolygonSet as
+/// documented above the winding number is 0 or -1 everywhere (outer rings wind -1, holes +1 and
+/// lie inside their outer ring, islands lie inside holes), so NonZero and EvenOdd give the same
+/// region. NonZero is the one used, so that a PolygonSet means the same everywhere: it is what
+/// rasterize(set), and with it the mask checks, fill. (The choice only shows on hand-made sets
+/// that break the rules above: NonZero reads overlapping polygons as their union.)
+constexpr FillRule kPolygonSetFillRule = FillRule::NonZero;
+
 /// Signed shoelace area of a closed path: positive when it winds +1 (see conventions above).
 double signedArea(const Path& path);
 

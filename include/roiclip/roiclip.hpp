@@ -42,6 +42,44 @@ PolygonSet subtract(const Paths& subject, const Paths& clip, FillRule rule = Fil
 PolygonSet symmetricDifference(const Paths& subject, const Paths& clip,
                                FillRule rule = FillRule::EvenOdd, const Grid& grid = {});
 
+/// PolygonSet operands: a PolygonSet (e.g. an earlier result) as the subject and/or the clip.
+/// A PolygonSet operand is read as its rings (set.toPaths()) under kPolygonSetFillRule
+/// (FillRule::NonZero; its rings are simple and nested, so EvenOdd would give the same region,
+/// see geometry.hpp), and the result is exactly that of clip() on those paths. The other
+/// operand's rule is given as usual. Like any input, the set's vertices are snapped to `grid`
+/// first: a result's crossing vertices lie off the grid (exact doubles), so feeding a result back
+/// moves them by up to half a grid unit per axis. An InvalidInputError names a ring by its index
+/// in set.toPaths() ("subject path 2, ...").
+PolygonSet clip(ClipOp op, const PolygonSet& subject, const Paths& clip, FillRule clipRule,
+                const Grid& grid = {});
+PolygonSet clip(ClipOp op, const Paths& subject, const PolygonSet& clip, FillRule subjectRule,
+                const Grid& grid = {});
+PolygonSet clip(ClipOp op, const PolygonSet& subject, const PolygonSet& clip,
+                const Grid& grid = {});
+
+/// Shorthands for the PolygonSet operand clip()s above; `rule` is the Paths operand's rule.
+PolygonSet intersect(const PolygonSet& subject, const Paths& clip,
+                     FillRule rule = FillRule::EvenOdd, const Grid& grid = {});
+PolygonSet intersect(const Paths& subject, const PolygonSet& clip,
+                     FillRule rule = FillRule::EvenOdd, const Grid& grid = {});
+PolygonSet intersect(const PolygonSet& subject, const PolygonSet& clip, const Grid& grid = {});
+PolygonSet unite(const PolygonSet& subject, const Paths& clip, FillRule rule = FillRule::EvenOdd,
+                 const Grid& grid = {});
+PolygonSet unite(const Paths& subject, const PolygonSet& clip, FillRule rule = FillRule::EvenOdd,
+                 const Grid& grid = {});
+PolygonSet unite(const PolygonSet& subject, const PolygonSet& clip, const Grid& grid = {});
+PolygonSet subtract(const PolygonSet& subject, const Paths& clip, FillRule rule = FillRule::EvenOdd,
+                    const Grid& grid = {});
+PolygonSet subtract(const Paths& subject, const PolygonSet& clip, FillRule rule = FillRule::EvenOdd,
+                    const Grid& grid = {});
+PolygonSet subtract(const PolygonSet& subject, const PolygonSet& clip, const Grid& grid = {});
+PolygonSet symmetricDifference(const PolygonSet& subject, const Paths& clip,
+                               FillRule rule = FillRule::EvenOdd, const Grid& grid = {});
+PolygonSet symmetricDifference(const Paths& subject, const PolygonSet& clip,
+                               FillRule rule = FillRule::EvenOdd, const Grid& grid = {});
+PolygonSet symmetricDifference(const PolygonSet& subject, const PolygonSet& clip,
+                               const Grid& grid = {});
+
 /// Which parts of open polylines clipLines() returns.
 enum class LinePart {
   Inside,   ///< the parts in the region, including parts running along its boundary

@@ -2,6 +2,7 @@
 // image conversions it needs.
 #include <roiclip/opencv/contours.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <utility>
 
@@ -125,18 +126,12 @@ std::vector<ContourGroup> detectContours(cv::InputArray input, const ContourOpti
       c = std::move(approx);
     }
   }
-  Paths rings = fromContours(contours, hierarchy);  // outer rings negative, holes positive
-  std::vector<ContourGroup> groups;
-  for (std::size_t i = 0; i < contours.size(); ++i) {
-    if (hierarchy[i][3] != -1) continue;  // a hole; taken with its outer contour below
-    if (options.minArea > 0 && std::abs(cv::contourArea(contours[i])) < options.minArea) continue;
-    ContourGroup group;
-    group.index = static_cast<int>(i);
-    group.rings.push_back(std::move(rings[i]));
-    for (int h = hierarchy[i][2]; h >= 0; h = hierarchy[static_cast<std::size_t>(h)][0]) {
-      group.rings.push_back(std::move(rings[static_cast<std::size_t>(h)]));
-    }
-    groups.push_back(std::move(group));
+  std::vector<ContourGroup> groups = groupContours(contours, hierarchy);
+  if (options.minArea > 0) {
+    const auto tooSmall = [&](const ContourGroup& g) {
+      return std::abs(cv::contourArea(contours[std::size_t(g.index)])) < options.minArea;
+    };
+    groups.erase(std::remove_if(groups.begin(), groups.end(), tooSmall), groups.end());
   }
   return groups;
 }

@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <limits>
 #include <string>
+#include <utility>
 
 #include <opencv2/imgproc.hpp>
 
@@ -233,6 +234,32 @@ Paths fromContours(cv::InputArrayOfArrays contours, cv::InputArray hierarchy) {
   return out;
 }
 
+std::vector<ContourGroup> groupContours(cv::InputArrayOfArrays contours, cv::InputArray hierarchy) {
+  Paths rings = fromContours(contours, hierarchy);
+  std::vector<ContourGroup> groups;
+  const cv::Mat h = hierarchy.getMat();
+  if (h.empty()) {
+    for (std::size_t i = 0; i < rings.size(); ++i)
+      groups.push_back({int(i), {std::move(rings[i])}});
+    return groups;
+  }
+  const std::vector<int> depth = hierarchyDepths(h, rings.size());
+  const cv::Mat flat = h.isContinuous() ? h : h.clone();
+  const cv::Vec4i* e = flat.ptr<cv::Vec4i>();
+  std::vector<std::size_t> groupOf(rings.size());
+  for (std::size_t i = 0; i < rings.size(); ++i) {
+    if (depth[i] % 2 != 0) continue;
+    groupOf[i] = groups.size();
+    groups.push_back({int(i), {std::move(rings[i])}});
+  }
+  // A second pass: a hand-made hierarchy may list a hole before its outer contour.
+  for (std::size_t i = 0; i < rings.size(); ++i) {
+    if (depth[i] % 2 == 0) continue;
+    groups[groupOf[std::size_t(e[i][3])]].rings.push_back(std::move(rings[i]));
+  }
+  return groups;
+}
+
 Contours<cv::Point> toContours(const PolygonSet& set) { return convertSet<cv::Point>(set, 1.0); }
 
 Contours<cv::Point2f> toContours2f(const PolygonSet& set) {
@@ -270,10 +297,27 @@ void fillPolygonSet(cv::InputOutputArray image, const PolygonSet& set, const cv:
 
 void drawPolygonSet(cv::InputOutputArray image, const PolygonSet& set, const cv::Scalar& color,
                     int thickness, int lineType) {
-  const FixedPointContours c = toFixedPointContours(set);
+  drawPaths(image, set.toPaths(), color, thickness, lineType, true);
+}
+
+void fillPaths(cv::InputOutputArray image, const Paths& paths, FillRule rule,
+               const cv::Scalar& color, int lineType) {
+  if (rule != FillRule::EvenOdd) {
+    fillPolygonSet(image, simplify(paths, rule), color, lineType);
+    return;
+  }
+  const FixedPointContours c = toFixedPointContours(paths);
   const auto contours = nonEmpty(c.contours.contours);
   if (contours.empty()) return;
-  cv::polylines(image, contours, true, color, thickness, lineType, c.shift);
+  cv::fillPoly(image, contours, color, lineType, c.shift);
+}
+
+void drawPaths(cv::InputOutputArray image, const Paths& paths, const cv::Scalar& color,
+               int thickness, int lineType, bool closed) {
+  const FixedPointContours c = toFixedPointContours(paths);
+  const auto contours = nonEmpty(c.contours.contours);
+  if (contours.empty()) return;
+  cv::polylines(image, contours, closed, color, thickness, lineType, c.shift);
 }
 
 }  // namespace roiclip::opencv

@@ -111,7 +111,7 @@ cv::Mat rasterize(const Paths& paths, FillRule rule, cv::Size size, const Grid& 
 }
 
 cv::Mat rasterize(const PolygonSet& set, cv::Size size, const Grid& grid) {
-  return rasterize(set.toPaths(), FillRule::NonZero, size, grid);
+  return rasterize(set.toPaths(), kPolygonSetFillRule, size, grid);
 }
 
 }  // namespace roiclip::opencv

@@ -1,13 +1,19 @@
 // Detector wrapper: corner order, pixel convention, buffer handling, ownership, threads, errors.
 #include <roiclip/apriltag/detector.hpp>
 
+#include <array>
+#include <cmath>
 #include <cstring>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
+#ifdef ROICLIP_TEST_ARUCO
+#include <opencv2/aruco.hpp>
+#endif
 
 // Only to demonstrate the in-place blur trap on the raw library (never in public headers).
 extern "C" {
@@ -100,6 +106,119 @@ TEST(AprilTagDetector, CornersFollowTheTagWhenItIsRotated) {
   EXPECT_LT(dist(d.corner(Corner::BottomRight), {b.left, b.bottom}), 0.05);
   EXPECT_LT(dist(d.corner(Corner::BottomLeft), {b.left, b.top}), 0.05);
 }
+
+TEST(ArucoOrder, ArucoCornersStartTopLeftAndRunClockwise) {
+  int total = 0, border = 0;
+  const cv::Mat upright = canvasWithTag(7, 40, 30, -1, "tag36h11", &total, &border);
+  const std::vector<ra::Detection> found = ra::Detector(unrefined()).detect(upright);
+  ASSERT_EQ(found.size(), 1u);
+  const Box b = borderBox(40, 30, total, border);
+  const std::array<glm::dvec2, 4> aruco = ra::arucoCorners(found[0]);
+  EXPECT_LT(dist(aruco[0], {b.left, b.top}), 0.05);
+  EXPECT_LT(dist(aruco[1], {b.right, b.top}), 0.05);
+  EXPECT_LT(dist(aruco[2], {b.right, b.bottom}), 0.05);
+  EXPECT_LT(dist(aruco[3], {b.left, b.bottom}), 0.05);
+  // Clockwise on screen (y down) is a positive shoelace sum: the reverse of libapriltag's order.
+  double shoelace = 0;
+  for (int k = 0; k < 4; ++k) {
+    shoelace += aruco[k].x * aruco[(k + 1) % 4].y - aruco[(k + 1) % 4].x * aruco[k].y;
+    EXPECT_EQ(aruco[k], found[0].corners[3 - k]) << k;
+  }
+  EXPECT_GT(shoelace, 0);
+
+  // Rotated 90 degrees clockwise: the tag's own top-left corner is now at the top right of the
+  // box, and cv::aruco's order follows the tag, not the screen.
+  const cv::Mat rotated = canvasWithTag(7, 40, 30, cv::ROTATE_90_CLOCKWISE);
+  const std::vector<ra::Detection> turned = ra::Detector(unrefined()).detect(rotated);
+  ASSERT_EQ(turned.size(), 1u);
+  const std::array<glm::dvec2, 4> r = ra::arucoCorners(turned[0]);
+  EXPECT_LT(dist(r[0], {b.right, b.top}), 0.05);
+  EXPECT_LT(dist(r[1], {b.right, b.bottom}), 0.05);
+  EXPECT_LT(dist(r[2], {b.left, b.bottom}), 0.05);
+  EXPECT_LT(dist(r[3], {b.left, b.top}), 0.05);
+}
+
+TEST(ArucoOrder, DetectionFromArucoCornersRoundTrips) {
+  const cv::Mat image = canvasWithTag(11, 60, 40, cv::ROTATE_180);
+  const std::vector<ra::Detection> found = ra::Detector().detect(image);
+  ASSERT_EQ(found.size(), 1u);
+  const ra::Detection& d = found[0];
+  const ra::Detection back = ra::detectionFromArucoCorners(d.id, ra::arucoCorners(d), d.family);
+  EXPECT_EQ(back.id, 11);
+  EXPECT_EQ(back.family, "tag36h11");
+  EXPECT_EQ(back.corners, d.corners);
+  EXPECT_EQ(ra::arucoCorners(back), ra::arucoCorners(d));
+  // The other origin is the same list turned by two places, and round-trips the same way.
+  const auto fromBottomRight = ra::arucoCorners(d, ra::ArucoFirstCorner::BottomRight);
+  for (int k = 0; k < 4; ++k) EXPECT_EQ(fromBottomRight[k], ra::arucoCorners(d)[(k + 2) % 4]);
+  EXPECT_EQ(ra::detectionFromArucoCorners(d.id, fromBottomRight, d.family,
+                                          ra::ArucoFirstCorner::BottomRight)
+                .corners,
+            d.corners);
+  for (const glm::dvec2 q : {glm::dvec2{0, 0}, glm::dvec2{0.3, -0.2}, glm::dvec2{-0.5, 0.5}}) {
+    EXPECT_LT(dist(back.tagToImage(q), d.tagToImage(q)), 1e-9);
+  }
+  EXPECT_LT(dist(back.centre, d.centre), 0.05);  // libapriltag's own centre vs the fitted one
+  EXPECT_LT(dist(back.centre, d.tagToImage({0, 0})), 1e-9);
+
+  // cv::aruco's type for one marker: std::vector<cv::Point2f>.
+  std::vector<cv::Point2f> points;
+  for (const glm::dvec2 p : ra::arucoCorners(d)) points.emplace_back(float(p.x), float(p.y));
+  const ra::Detection fromFloats = ra::detectionFromArucoCorners(d.id, points, d.family);
+  for (int k = 0; k < 4; ++k) EXPECT_LT(dist(fromFloats.corners[k], d.corners[k]), 1e-4);
+
+  // libapriltag's order (counter-clockwise on screen) is refused, as are bad shapes and values.
+  EXPECT_THROW(ra::detectionFromArucoCorners(d.id, d.corners), roiclip::InvalidInputError);
+  EXPECT_THROW(ra::detectionFromArucoCorners(0, std::vector<cv::Point2f>(3)),
+               roiclip::InvalidInputError);
+  EXPECT_THROW(ra::detectionFromArucoCorners(0, std::vector<cv::Point>(4)),
+               roiclip::InvalidInputError);
+  std::array<glm::dvec2, 4> bad = ra::arucoCorners(d);
+  bad[2].x = std::nan("");
+  EXPECT_THROW(ra::detectionFromArucoCorners(0, bad), roiclip::InvalidInputError);
+  const std::array<glm::dvec2, 4> collinear = {glm::dvec2{0, 0}, glm::dvec2{10, 0},
+                                               glm::dvec2{20, 0}, glm::dvec2{10, 10}};
+  EXPECT_THROW(ra::detectionFromArucoCorners(0, collinear), roiclip::InvalidInputError);
+}
+
+#ifdef ROICLIP_TEST_ARUCO
+TEST(ArucoOrder, MatchesCvArucoOnRenderedTags) {
+  // cv::aruco's own detector on the same images, with its AprilTag dictionaries. It reports the
+  // libapriltag tag's bottom-right corner first (then clockwise): ArucoFirstCorner::BottomRight.
+  // Without corner refinement it returns the centres of the outermost border pixels, about
+  // 0.6 px inside libapriltag's corners per axis; a wrong order is a tag side (96 px) off.
+  const std::pair<const char*, int> families[] = {{"tag16h5", cv::aruco::DICT_APRILTAG_16h5},
+                                                  {"tag25h9", cv::aruco::DICT_APRILTAG_25h9},
+                                                  {"tag36h10", cv::aruco::DICT_APRILTAG_36h10},
+                                                  {"tag36h11", cv::aruco::DICT_APRILTAG_36h11}};
+  for (const auto& [family, dictionary] : families) {
+    for (int rotation : {-1, int(cv::ROTATE_90_CLOCKWISE)}) {
+      ra::DetectorOptions options;
+      options.family = family;
+      const cv::Mat image = canvasWithTag(7, 40, 30, rotation, family);
+      const std::vector<ra::Detection> found = ra::Detector(options).detect(image);
+      ASSERT_EQ(found.size(), 1u) << family;
+      std::vector<std::vector<cv::Point2f>> markers;
+      std::vector<int> ids;
+      cv::aruco::detectMarkers(image, cv::aruco::getPredefinedDictionary(dictionary), markers, ids);
+      ASSERT_EQ(ids, std::vector<int>{7}) << family;
+      const auto ours = ra::arucoCorners(found[0], ra::ArucoFirstCorner::BottomRight);
+      const auto topLeft = ra::arucoCorners(found[0]);
+      for (int k = 0; k < 4; ++k) {
+        const glm::dvec2 theirs{markers[0][k].x, markers[0][k].y};
+        EXPECT_LT(dist(ours[k], theirs), 1.0) << family << " corner " << k;
+        EXPECT_GT(dist(topLeft[k], theirs), 90) << family << " corner " << k;
+      }
+      // Handed back, cv::aruco's corners give the Detection libapriltag made.
+      const ra::Detection back = ra::detectionFromArucoCorners(ids[0], markers[0], family,
+                                                               ra::ArucoFirstCorner::BottomRight);
+      for (int k = 0; k < 4; ++k) {
+        EXPECT_LT(dist(back.corners[k], found[0].corners[k]), 1.0) << family << " corner " << k;
+      }
+    }
+  }
+}
+#endif
 
 TEST(AprilTagDetector, CoordinatesArePixelCentred) {
   // The black border covers pixels [x0, x1] inclusive; in OpenCV's convention its outer edge is at

@@ -1,6 +1,8 @@
 // Conversions between OpenCV contours and roiclip paths / polygon sets.
+#include <algorithm>
 #include <cmath>
 #include <functional>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -8,6 +10,8 @@
 #include <opencv2/imgproc.hpp>
 
 #include <roiclip/opencv/convert.hpp>
+#include <roiclip/opencv/mask_check.hpp>
+#include <roiclip/opencv/rasterize.hpp>
 
 namespace roiclip::opencv {
 namespace {
@@ -237,6 +241,148 @@ TEST(DrawPolygonSet, FillsSubPixelGeometry) {
   EXPECT_GT(cv::countNonZero(red), 4 * 40);
   // An empty set draws nothing and does not throw.
   fillPolygonSet(filled, PolygonSet{}, cv::Scalar(0));
+}
+
+TEST(GroupContours, OuterContoursWithTheirHolesInFindContoursOrder) {
+  // A frame with three holes, an island in one of them, a second frame with one hole, a dot.
+  cv::Mat img(80, 120, CV_8UC1, cv::Scalar(0));
+  cv::rectangle(img, cv::Rect(5, 5, 60, 60), 255, cv::FILLED);
+  cv::rectangle(img, cv::Rect(10, 10, 20, 20), 0, cv::FILLED);
+  cv::rectangle(img, cv::Rect(15, 15, 6, 6), 255, cv::FILLED);
+  cv::rectangle(img, cv::Rect(40, 10, 15, 15), 0, cv::FILLED);
+  cv::rectangle(img, cv::Rect(10, 40, 40, 15), 0, cv::FILLED);
+  cv::rectangle(img, cv::Rect(75, 5, 30, 30), 255, cv::FILLED);
+  cv::rectangle(img, cv::Rect(82, 12, 10, 10), 0, cv::FILLED);
+  cv::rectangle(img, cv::Rect(100, 60, 3, 3), 255, cv::FILLED);
+  std::vector<std::vector<cv::Point>> contours;
+  std::vector<cv::Vec4i> hierarchy;
+  cv::findContours(img, contours, hierarchy, cv::RETR_CCOMP, cv::CHAIN_APPROX_SIMPLE);
+  const std::vector<ContourGroup> groups = groupContours(contours, hierarchy);
+  // The same as walking the hierarchy: each top-level contour, then its firstChild/next chain.
+  const Paths rings = fromContours(contours, hierarchy);
+  std::vector<ContourGroup> walked;
+  for (std::size_t i = 0; i < contours.size(); ++i) {
+    if (hierarchy[i][3] != -1) continue;
+    ContourGroup g{int(i), {rings[i]}};
+    for (int h = hierarchy[i][2]; h >= 0; h = hierarchy[std::size_t(h)][0]) {
+      g.rings.push_back(rings[std::size_t(h)]);
+    }
+    walked.push_back(g);
+  }
+  ASSERT_EQ(groups.size(), 4u);  // two frames, the island, the dot
+  ASSERT_EQ(groups.size(), walked.size());
+  std::size_t mostHoles = 0;
+  for (std::size_t i = 0; i < groups.size(); ++i) {
+    EXPECT_EQ(groups[i].index, walked[i].index);
+    EXPECT_EQ(groups[i].rings, walked[i].rings) << i;
+    EXPECT_LT(signedArea(groups[i].rings[0]), 0);
+    for (std::size_t h = 1; h < groups[i].rings.size(); ++h) {
+      EXPECT_GT(signedArea(groups[i].rings[h]), 0);
+    }
+    mostHoles = std::max(mostHoles, groups[i].rings.size() - 1);
+  }
+  EXPECT_EQ(mostHoles, 3u);
+
+  // RETR_TREE: the island (depth 2) is a group of its own too; the same region in total.
+  std::vector<std::vector<cv::Point>> treeContours;
+  std::vector<cv::Vec4i> tree;
+  cv::findContours(img, treeContours, tree, cv::RETR_TREE, cv::CHAIN_APPROX_SIMPLE);
+  const std::vector<ContourGroup> treeGroups = groupContours(treeContours, tree);
+  ASSERT_EQ(treeGroups.size(), 4u);
+  double ccompArea = 0, treeArea = 0;
+  for (const ContourGroup& g : groups) ccompArea += simplify(g.rings, FillRule::NonZero).area();
+  for (const ContourGroup& g : treeGroups) treeArea += simplify(g.rings, FillRule::NonZero).area();
+  EXPECT_DOUBLE_EQ(treeArea, ccompArea);
+
+  // No hierarchy: every contour alone, its orientation kept.
+  const std::vector<ContourGroup> alone = groupContours(contours, cv::noArray());
+  ASSERT_EQ(alone.size(), contours.size());
+  for (std::size_t i = 0; i < alone.size(); ++i) {
+    EXPECT_EQ(alone[i].index, int(i));
+    EXPECT_EQ(alone[i].rings, Paths{fromContour(contours[i])});
+  }
+}
+
+TEST(GroupContours, HandMadeHierarchyMayListAHoleFirst) {
+  const std::vector<std::vector<cv::Point>> contours = {{{5, 5}, {5, 10}, {10, 10}, {10, 5}},
+                                                        {{0, 0}, {0, 20}, {20, 20}, {20, 0}}};
+  const std::vector<cv::Vec4i> hierarchy = {{-1, -1, -1, 1}, {-1, -1, 0, -1}};
+  const std::vector<ContourGroup> groups = groupContours(contours, hierarchy);
+  ASSERT_EQ(groups.size(), 1u);
+  EXPECT_EQ(groups[0].index, 1);
+  ASSERT_EQ(groups[0].rings.size(), 2u);
+  EXPECT_DOUBLE_EQ(signedArea(groups[0].rings[0]), -400);
+  EXPECT_DOUBLE_EQ(signedArea(groups[0].rings[1]), 25);
+  EXPECT_THROW(groupContours(contours, std::vector<cv::Vec4i>{{-1, -1, -1, 1}, {-1, -1, -1, 0}}),
+               InvalidInputError);
+}
+
+// Two squares wound the same way overlapping in [10, 20] x [0, 20], and a third wound the other
+// way: winding 1 and 2 inside the first two, -1 inside the third.
+const Paths kWound = {{{0, 0}, {20, 0}, {20, 20}, {0, 20}},
+                      {{10, 0}, {30, 0}, {30, 20}, {10, 20}},
+                      {{40, 0}, {40, 20}, {55, 20}, {55, 0}}};
+
+TEST(FillPaths, EvenOddIsOneFillPolyCallOfThePaths) {
+  cv::Mat got(30, 64, CV_8UC1, cv::Scalar(0)), want = got.clone();
+  fillPaths(got, kWound, FillRule::EvenOdd, cv::Scalar(255));
+  const FixedPointContours c = toFixedPointContours(kWound);
+  cv::fillPoly(want, c.contours.contours, cv::Scalar(255), cv::LINE_8, c.shift);
+  EXPECT_EQ(cv::countNonZero(got != want), 0);
+  EXPECT_EQ(got.at<std::uint8_t>(10, 15), 0);    // winding 2
+  EXPECT_EQ(got.at<std::uint8_t>(10, 5), 255);   // winding 1
+  EXPECT_EQ(got.at<std::uint8_t>(10, 45), 255);  // winding -1
+}
+
+TEST(FillPaths, OtherRulesFillTheExactRegionOfTheRule) {
+  struct Case {
+    FillRule rule;
+    bool w2, w1, wMinus1;
+  };
+  for (const Case& k :
+       {Case{FillRule::NonZero, true, true, true}, Case{FillRule::Positive, true, true, false},
+        Case{FillRule::Negative, false, false, true}}) {
+    cv::Mat got(30, 64, CV_8UC3, cv::Scalar::all(0)), want = got.clone();
+    fillPaths(got, kWound, k.rule, cv::Scalar(0, 200, 0));
+    fillPolygonSet(want, simplify(kWound, k.rule), cv::Scalar(0, 200, 0));
+    EXPECT_EQ(cv::norm(got, want, cv::NORM_INF), 0) << toString(k.rule);
+    EXPECT_EQ(got.at<cv::Vec3b>(10, 15)[1] == 200, k.w2) << toString(k.rule);
+    EXPECT_EQ(got.at<cv::Vec3b>(10, 5)[1] == 200, k.w1) << toString(k.rule);
+    EXPECT_EQ(got.at<cv::Vec3b>(10, 45)[1] == 200, k.wMinus1) << toString(k.rule);
+  }
+  // On random self-intersecting paths every rule's fill is the exact region off OpenCV's band.
+  std::mt19937 rng(16);
+  std::uniform_real_distribution<double> coord(2, 78);
+  for (int trial = 0; trial < 20; ++trial) {
+    Paths paths(2);
+    for (Path& p : paths) {
+      for (int i = 0; i < 9; ++i) p.emplace_back(coord(rng), coord(rng));
+    }
+    for (FillRule rule :
+         {FillRule::EvenOdd, FillRule::NonZero, FillRule::Positive, FillRule::Negative}) {
+      cv::Mat filled(80, 80, CV_8UC1, cv::Scalar(0));
+      fillPaths(filled, paths, rule, cv::Scalar(255));
+      const cv::Mat exact = rasterize(paths, rule, filled.size());
+      const MaskComparison c = compareMasks(exact, filled, kOpenCvBand, paths);
+      EXPECT_TRUE(c.agreesOffBand()) << toString(rule) << " trial " << trial << ": " << c;
+    }
+  }
+}
+
+TEST(DrawPaths, ClosedOrOpen) {
+  const Paths corner = {{{2, 2}, {20, 2}, {20, 20}}};
+  cv::Mat closed(24, 24, CV_8UC1, cv::Scalar(0)), open = closed.clone();
+  drawPaths(closed, corner, cv::Scalar(255));
+  drawPaths(open, corner, cv::Scalar(255), 1, cv::LINE_8, false);
+  EXPECT_EQ(closed.at<std::uint8_t>(11, 11), 255);  // on the closing diagonal
+  EXPECT_EQ(open.at<std::uint8_t>(11, 11), 0);
+  EXPECT_EQ(open.at<std::uint8_t>(2, 11), 255);
+  EXPECT_EQ(open.at<std::uint8_t>(11, 20), 255);
+  // drawPolygonSet draws the set's rings closed.
+  cv::Mat rings(24, 24, CV_8UC1, cv::Scalar(0));
+  drawPolygonSet(rings, simplify(corner, FillRule::NonZero), cv::Scalar(255));
+  EXPECT_EQ(cv::countNonZero(rings != closed), 0);
+  drawPaths(open, Paths{Path{}}, cv::Scalar(255));  // empty paths draw nothing
 }
 
 }  // namespace

@@ -53,6 +53,50 @@ struct Detection {
   [[nodiscard]] glm::dvec2 tagToImage(glm::dvec2 tagPoint) const;
 };
 
+/// Which corner of a tag comes first in a cv::aruco corner list; the list then runs clockwise
+/// on screen (y down). "Top-left" etc. refer to the upright tag (see Corner).
+enum class ArucoFirstCorner {
+  /// The tag's top-left: cv::aruco's documented order (top-left, top-right, bottom-right,
+  /// bottom-left), as cv::aruco::drawDetectedMarkers and cv::solvePnP with SOLVEPNP_IPPE_SQUARE
+  /// take it, and as cv::aruco reports its own ArUco dictionaries.
+  TopLeft,
+  /// The tag's bottom-right: what cv::aruco::detectMarkers of OpenCV 4 reports for the
+  /// DICT_APRILTAG_* dictionaries, which it reads turned by 180 degrees against libapriltag
+  /// (tested with OpenCV 4.6 for 16h5, 25h9, 36h10 and 36h11; see opencv/opencv-python#1195 —
+  /// OpenCV 5 changes this, opencv/opencv#28823). Use it for corners that cv::aruco found with
+  /// an AprilTag dictionary in OpenCV 4.
+  BottomRight,
+};
+
+/// The corners of `detection` in cv::aruco's order: Detection::corners reordered, for
+/// ArucoFirstCorner::TopLeft {TopLeft, TopRight, BottomRight, BottomLeft}, for BottomRight
+/// {BottomRight, BottomLeft, TopLeft, TopRight}. (libapriltag's own order runs the other way:
+/// counter-clockwise on screen from the bottom-left, see Corner.) Both lists are in OpenCV's
+/// pixel-centre convention, so no shift is involved.
+std::array<glm::dvec2, 4> arucoCorners(const Detection& detection,
+                                       ArucoFirstCorner first = ArucoFirstCorner::TopLeft);
+
+/// A Detection from corners in cv::aruco's order (e.g. one marker cv::aruco found), so that tags
+/// found by cv::aruco can be handed to the ROI builders (roi.hpp). The corners become
+/// Detection::corners in libapriltag's order, the homography is fitted to them exactly and
+/// `centre` is its image of the tag centre; hamming and decisionMargin are 0.
+/// arucoCorners(result, first) gives `corners` back.
+/// @param corners clockwise on screen from the corner `first` says,
+///        in OpenCV's pixel convention (what cv::aruco returns).
+/// @param first   which tag corner `corners` starts at; BottomRight for cv::aruco's AprilTag
+///        dictionaries in OpenCV 4 (see ArucoFirstCorner).
+/// @throws InvalidInputError if a coordinate is not finite, or the corners do not form a convex
+///         quadrilateral running clockwise on screen (libapriltag's order runs the other way; so
+///         does a mirrored tag; three collinear corners are not strictly convex).
+Detection detectionFromArucoCorners(int id, const std::array<glm::dvec2, 4>& corners,
+                                    const std::string& family = "",
+                                    ArucoFirstCorner first = ArucoFirstCorner::TopLeft);
+/// As above, from cv::aruco's own type for one marker: 4 points as std::vector<cv::Point2f>
+/// (or any array cv::Mat::checkVector(2) accepts with 4 points, CV_32F or CV_64F).
+/// @throws InvalidInputError also when `corners` is not 4 points of those types.
+Detection detectionFromArucoCorners(int id, cv::InputArray corners, const std::string& family = "",
+                                    ArucoFirstCorner first = ArucoFirstCorner::TopLeft);
+
 /// Detector settings; the names follow libapriltag's apriltag_detector_t fields.
 struct DetectorOptions {
   /// Tag family name, or several separated by commas ("tag36h11,tag25h9"); see

@@ -8,6 +8,7 @@
 
 #include <opencv2/core.hpp>
 
+#include <roiclip/opencv/convert.hpp>  // ContourGroup
 #include <roiclip/roiclip.hpp>
 
 namespace roiclip::opencv {
@@ -53,17 +54,10 @@ struct ContourOptions {
   bool openEdges = false;
 };
 
-/// One outer contour of cv::findContours (RETR_CCOMP) with its holes.
-struct ContourGroup {
-  int index = -1;  ///< index of the outer contour in cv::findContours' output
-  /// Outer ring first (negative shoelace sum), then its holes (positive), as
-  /// fromContours(contours, hierarchy) orients them.
-  Paths rings;
-};
-
 /// Detect contours as `options` says (RETR_CCOMP, CHAIN_APPROX_SIMPLE, then approxPolyDP when
-/// options.approxEpsilon > 0) and group each outer contour with its holes. Outer contours below
-/// options.minArea are dropped with their holes. Groups come in findContours' order.
+/// options.approxEpsilon > 0) and group each outer contour with its holes (groupContours()).
+/// Outer contours below options.minArea are dropped with their holes. Groups come in
+/// findContours' order.
 /// @param gray CV_8UC1, not empty.
 /// @throws InvalidInputError for another image type or a bad adaptive block size.
 std::vector<ContourGroup> detectContours(cv::InputArray gray, const ContourOptions& options);

@@ -47,6 +47,27 @@ Paths fromContours(cv::InputArrayOfArrays contours);
 ///         contour that does not exist, or has a cycle.
 Paths fromContours(cv::InputArrayOfArrays contours, cv::InputArray hierarchy);
 
+/// One outer contour of cv::findContours with its holes, the unit roiclip clips and reports
+/// contours in (detectContours(), groupContours(), clipGroups()).
+struct ContourGroup {
+  int index = -1;  ///< index of the outer contour in cv::findContours' output
+  /// Outer ring first (negative shoelace sum), then its holes (positive), as
+  /// fromContours(contours, hierarchy) orients them.
+  Paths rings;
+};
+
+/// Group cv::findContours output into outer contours with their holes, keeping each outer
+/// contour's index. Contours at even depth of the hierarchy are outer contours (with
+/// RETR_CCOMP: the top level), each starts a group; a contour at odd depth is a hole of its
+/// parent's group. Rings are oriented as fromContours(contours, hierarchy) orients them, so a
+/// group means the same region under FillRule::NonZero and EvenOdd (unless approxPolyDP made a
+/// ring self-intersect). Groups come in contour order, holes in contour order within a group
+/// (for cv::findContours output that is the firstChild/next order).
+/// @param hierarchy as fromContours(); RETR_CCOMP or RETR_TREE (islands in holes become groups
+///        of their own). Empty: every contour is a group of one ring, its orientation kept.
+/// @throws InvalidInputError as fromContours(contours, hierarchy).
+std::vector<ContourGroup> groupContours(cv::InputArrayOfArrays contours, cv::InputArray hierarchy);
+
 /// Contours and their hierarchy in cv::findContours' RETR_CCOMP layout: every polygon's outer
 /// ring is a top-level contour (parent -1) linked to the other outer rings by next/previous;
 /// its holes are its children (linked to each other by next/previous, firstChild of the outer
@@ -74,8 +95,10 @@ Contours<cv::Point2f> toContours2f(const PolygonSet& set);
 /// As toContours(), in double: the exact output coordinates.
 Contours<cv::Point2d> toContours2d(const PolygonSet& set);
 
-/// Fixed-point contours for cv::fillPoly / cv::polylines / cv::drawContours with a `shift`:
-/// each coordinate is std::lround(v * 2^shift), so vertices keep 1/2^shift px precision.
+/// Fixed-point contours for cv::fillPoly / cv::polylines, which take a `shift`: each coordinate
+/// is std::lround(v * 2^shift), so vertices keep 1/2^shift px precision. cv::drawContours takes
+/// no shift (only an offset), so it would draw these 2^shift times too large; give it
+/// toContours() instead, or draw with fillPolygonSet() / drawPolygonSet().
 struct FixedPointContours {
   Contours<cv::Point> contours;
   int shift = kDefaultShift;
@@ -99,5 +122,21 @@ void fillPolygonSet(cv::InputOutputArray image, const PolygonSet& set, const cv:
 /// Draw the rings of a polygon set as closed polylines at sub-pixel precision (kDefaultShift).
 void drawPolygonSet(cv::InputOutputArray image, const PolygonSet& set, const cv::Scalar& color,
                     int thickness = 1, int lineType = cv::LINE_8);
+
+/// Fill closed paths (any, e.g. an ROI or raw contours) under a fill rule into `image` at
+/// sub-pixel precision (kDefaultShift), drawn as fillPolygonSet() draws.
+/// FillRule::EvenOdd is what cv::fillPoly implements, so the paths go into one cv::fillPoly call
+/// as they are. For the other rules the paths are first resolved exactly by
+/// simplify(paths, rule) (so the same grid snapping), whose rings mean the same under even-odd,
+/// and those are filled: the filled region is exactly the rule's, with the same edge-line
+/// margin as cv::fillPoly (pixels up to about 1 px outside; rasterize() has none).
+/// @throws InvalidInputError as simplify() (NaN, out-of-range coordinates).
+void fillPaths(cv::InputOutputArray image, const Paths& paths, FillRule rule,
+               const cv::Scalar& color, int lineType = cv::LINE_8);
+
+/// Draw paths with cv::polylines at sub-pixel precision (kDefaultShift): closed (the last point
+/// joined to the first) by default, or open for polylines such as clipLines() output.
+void drawPaths(cv::InputOutputArray image, const Paths& paths, const cv::Scalar& color,
+               int thickness = 1, int lineType = cv::LINE_8, bool closed = true);
 
 }  // namespace roiclip::opencv

@@ -33,7 +33,8 @@ namespace roiclip::opencv {
 ///         grid; the message names the path and vertex.
 cv::Mat rasterize(const Paths& paths, FillRule rule, cv::Size size, const Grid& grid = {});
 
-/// Rasterise a polygon set (its rings under FillRule::NonZero), with the same pixel rule.
+/// Rasterise a polygon set (its rings under kPolygonSetFillRule, i.e. FillRule::NonZero), with
+/// the same pixel rule.
 cv::Mat rasterize(const PolygonSet& set, cv::Size size, const Grid& grid = {});
 
 }  // namespace roiclip::opencv
