@@ -5,7 +5,8 @@
 
 int main() {
   const roiclip::Paths rect = {{{-0.5, -0.5}, {9.5, -0.5}, {9.5, 4.5}, {-0.5, 4.5}}};
-  const cv::Mat mask = roiclip::opencv::rasterize(rect, roiclip::FillRule::EvenOdd, cv::Size(20, 20));
+  const cv::Mat mask =
+      roiclip::opencv::rasterize(rect, roiclip::FillRule::EvenOdd, cv::Size(20, 20));
   const int pixels = cv::countNonZero(mask);
   std::cout << "area " << pixels << "\n";
   return pixels == 50 ? 0 : 1;
