@@ -53,7 +53,7 @@ struct RoiRegion {
 
 /// Seconds spent in each stage of one image, in pipeline order. Processor::process() fills
 /// detect to check; processFile() also `read`; `roiclip run` (batch::run) also overlay and write.
-/// The stages cover the whole image: total is their sum up to a few microseconds of glue.
+/// The stages cover the whole image: total is their sum but for a little glue (checks, moves).
 struct StageTimes {
   double read = 0;      ///< reading and decoding the image file
   double detect = 0;    ///< conversion to 8-bit gray and AprilTag detection
