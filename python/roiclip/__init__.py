@@ -20,6 +20,10 @@ after that is exact. Outer rings of results have a negative shoelace sum (cv2.co
 True) < 0) and holes a positive one. Fill rules and operations are enums (FillRule.NON_ZERO,
 ClipOp.UNION) or their names ('nonzero', 'union').
 
+The whole `roiclip run` pipeline on one image (tags -> ROI -> contours -> exact clip -> mask
+check) is ``roiclip.process_image(image_or_path, roi="hull", ...)``: it returns the dict
+NAME.json holds (docs/outputs.md), with the clipped polygons as a GeoJSON FeatureCollection.
+
 Errors: roiclip.Error is the root; InvalidInputError (also a ValueError) for NaN, out-of-range
 coordinates, malformed arrays or files, with the C++ library's message naming the input;
 MissingTagsError when an ROI builder lacks tags; InternalError for bugs. The GIL is released
@@ -62,6 +66,7 @@ from ._roiclip import (  # noqa: F401  (re-exported)
     intersect,
     parse_roi_spec,
     polygon_through_tags,
+    process_image,
     rasterize,
     release_thread_buffers,
     render_tag,
@@ -107,6 +112,7 @@ __all__ = [
     "intersect",
     "parse_roi_spec",
     "polygon_through_tags",
+    "process_image",
     "rasterize",
     "release_thread_buffers",
     "render_tag",

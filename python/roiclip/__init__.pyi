@@ -4,6 +4,7 @@ Conventions: pixels, x right, y down, (0, 0) the centre of the top-left pixel (O
 Inputs snap to a 1/256 px grid, |coordinate| <= 4,194,304 px.
 """
 
+import os
 from typing import Any, ClassVar, Iterator, Optional, Sequence, Tuple, Union
 
 import numpy as np
@@ -302,3 +303,29 @@ def check_roi_clip(
     opencv_band: float = ...,
 ) -> MaskCheck:
     """Check result (clip(op, subject, roi)) against the raster routes off a boundary band."""
+
+def process_image(
+    image: Union[np.ndarray, str, os.PathLike[str]],
+    *,
+    roi: Union[str, Sequence[str]] = ["hull"],
+    board: str = "",
+    family: str = "tag36h11",
+    tag_margin: float = 0.0,
+    keep_tags: bool = False,
+    method: str = "otsu",
+    polarity: str = "dark",
+    approx_epsilon: float = 0.0,
+    min_area: float = 0.0,
+    fill_rule: FillRuleLike = "evenodd",
+    roi_fill_rule: FillRuleLike = "evenodd",
+    quad_decimate: float = 0.0,
+    max_hamming: int = 0,
+    min_margin: float = 0.0,
+    edges: bool = False,
+    max_pixels: int = 100_000_000,
+    name: Optional[str] = None,
+) -> dict[str, Any]:
+    """`roiclip run`'s pipeline on one image (a numpy array or a file path): the NAME.json
+    record as a dict (docs/outputs.md; 'clipped' is a GeoJSON FeatureCollection in pixels, y
+    down). Per-image problems are in the record's status and reason; bad options raise
+    InvalidInputError. Releases the GIL."""

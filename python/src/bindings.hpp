@@ -9,5 +9,7 @@ namespace roiclip::python {
 void bindGeometry(pybind11::module_& m);
 /// AprilTag detection, ROI builders, rasterize and the mask checks (vision.cpp).
 void bindVision(pybind11::module_& m);
+/// process_image: the `roiclip run` pipeline on one image (batch.cpp).
+void bindBatch(pybind11::module_& m);
 
 }  // namespace roiclip::python

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include <roiclip/apriltag/roi.hpp>
+#include <roiclip/batch/process.hpp>  // roiclipVersion()
 #include <roiclip/error.hpp>
 
 #include "bindings.hpp"
@@ -35,7 +36,7 @@ PYBIND11_MODULE(_roiclip, m) {
   m.doc() =
       "Exact clipping of self-intersecting polygons for vision pipelines (C++ core; see the "
       "roiclip package docstring).";
-  m.attr("__version__") = ROICLIP_VERSION;
+  m.attr("__version__") = roiclip::batch::roiclipVersion();
 
   // Kept for the life of the interpreter (the translator below uses them).
   static py::handle error, invalidInput, internal, missingTags;
@@ -82,4 +83,5 @@ PYBIND11_MODULE(_roiclip, m) {
 
   roiclip::python::bindGeometry(m);
   roiclip::python::bindVision(m);
+  roiclip::python::bindBatch(m);
 }

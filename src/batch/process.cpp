@@ -31,11 +31,8 @@ namespace roiclip::batch {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
-double secondsSince(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
+using detail::Clock;
+using detail::secondsSince;
 
 // A convex tag quad grown outwards by `margin` px: every edge moved along its normal, corners
 // where the moved edges meet. Oriented like an outer ring (negative shoelace sum), so that the
@@ -147,6 +144,7 @@ class Pipeline {
     const cv::Mat gray = opencv::toGray8(image);
     r.width = gray.cols;
     r.height = gray.rows;
+    r.seconds.detect = secondsSince(start);  // the gray image is the detector's input
     detectTags(gray, r);
     if (buildRoi(r, calls)) {
       const std::vector<opencv::ContourGroup> groups = findContours(gray, r);
@@ -174,7 +172,7 @@ class Pipeline {
     r.tags = std::move(found.tags);
     r.rejectedTags = std::move(found.rejected);
     r.quadDecimate = found.quadDecimate;
-    r.seconds.detect = secondsSince(t);
+    r.seconds.detect += secondsSince(t);
   }
 
   // False (Status::NoRoi) when the tags a spec needs are not there.
@@ -282,14 +280,20 @@ class Pipeline {
       c.clippedArea = c.clipped.area();
       if (r.rois.size() > 1 && !c.clipped.empty()) {
         const Paths inside = c.clipped.toPaths();
-        for (RoiRegion& one : r.rois) {
+        for (std::size_t i = 0; i < r.rois.size(); ++i) {
+          RoiRegion& one = r.rois[i];
           ++calls.clip;
           const double area = clip(ClipOp::Intersection, inside, one.region, FillRule::EvenOdd,
                                    FillRule::EvenOdd, options_.grid)
                                   .area();
-          if (area > 0) ++one.contoursOut;
+          if (area > 0) {
+            ++one.contoursOut;
+            c.rois.push_back(static_cast<int>(i));
+          }
           one.clippedArea += area;
         }
+      } else if (!c.clipped.empty()) {
+        c.rois = {0};
       }
       r.holesIn += static_cast<int>(c.input.size()) - 1;
       if (!c.clipped.empty()) ++r.contoursOut;
@@ -377,6 +381,21 @@ ImageResult runCaught(const Pipeline& pipeline, const cv::Mat& image, detail::Co
   return r;
 }
 
+// readImage() with its problems turned into Status::Failed.
+cv::Mat readCaught(const std::string& file, std::int64_t maxPixels, ImageResult& r) {
+  try {
+    return readImage(file, maxPixels);
+  } catch (const ImageTooLargeError& e) {
+    r.failure = FailureKind::TooLarge;
+    r.reason = e.what();
+  } catch (const InvalidInputError& e) {
+    r.failure = FailureKind::Unreadable;
+    r.reason = e.what();
+  }
+  r.status = Status::Failed;
+  return {};
+}
+
 ImageResult optionsFailure(const Error& e) {
   ImageResult r;
   r.status = Status::Failed;
@@ -408,6 +427,18 @@ const RunOptions& Processor::options() const { return impl_->pipeline.options();
 ImageResult Processor::process(const cv::Mat& image) const {
   detail::CoreCalls calls;
   return runCaught(impl_->pipeline, image, calls);
+}
+
+ImageResult Processor::processFile(const std::string& file, cv::Mat* image) const {
+  const auto start = Clock::now();
+  ImageResult r;
+  const cv::Mat decoded = readCaught(file, options().maxPixels, r);
+  const double read = secondsSince(start);
+  if (!decoded.empty()) r = process(decoded);
+  r.seconds.read = read;
+  r.seconds.total = secondsSince(start);
+  if (image) *image = decoded;
+  return r;
 }
 
 ImageResult processImage(const cv::Mat& image, const RunOptions& options) {

@@ -1,5 +1,6 @@
 // The run's summary files: summary.csv, summary.json and report.html.
 #include "detail/report.hpp"
+#include "detail/result_json.hpp"  // kStageTimes
 
 #include <cctype>
 #include <iomanip>
@@ -95,13 +96,24 @@ std::string summaryCsv(const RunSummary& summary) {
       os << csvField(r.image) << ',' << toString(r.status) << ',' << toString(r.failure) << ','
          << csvField(r.reason) << ',' << (r.skipped ? 1 : 0) << ',' << r.width << ',' << r.height
          << ',' << r.tagsFound << ',' << fmt(roi.roiArea, 3) << ',' << r.contoursIn << ','
-         << roi.contoursOut << ',' << fmt(roi.clippedArea, 3) << ',' << fmt(r.iou, 6) << ','
+         << roi.contoursOut << ',' << fmt(roi.clippedArea, 3) << ','
+         << (r.iou ? fmt(*r.iou, 6) : std::string()) << ','  // empty: the check did not run
          << r.offBandMismatches << ',' << fmt(r.seconds, 4) << ',' << csvField(roi.name) << ','
          << r.tagsRejected << "\n";
     }
   }
   return os.str();
 }
+
+namespace {
+
+Json stageSecondsJson(const StageTimes& s) {
+  Json j = Json::object();
+  for (const auto& [name, member] : kStageTimes) j[name] = s.*member;
+  return j;
+}
+
+}  // namespace
 
 std::string summaryJson(const RunSummary& summary, const BatchOptions& options) {
   Json rows = Json::array();
@@ -128,12 +140,15 @@ std::string summaryJson(const RunSummary& summary, const BatchOptions& options) 
                     {"contours_in", r.contoursIn},
                     {"contours_out", r.contoursOut},
                     {"clipped_area", r.clippedArea},
-                    {"iou", r.iou},
+                    {"iou", r.iou ? Json(*r.iou) : Json(nullptr)},
                     {"off_band_mismatches", r.offBandMismatches},
-                    {"seconds", r.seconds}});
+                    {"seconds", r.seconds},
+                    {"stage_seconds", stageSecondsJson(r.stageSeconds)}});
   }
   const RunOptions& p = options.process;
-  Json j = {{"input", options.input.string()},
+  Json j = {{"schema_version", kSchemaVersion},
+            {"roiclip_version", roiclipVersion()},
+            {"input", options.input.string()},
             {"output", options.output.string()},
             {"options",
              {{"roi", p.rois},
@@ -156,6 +171,7 @@ std::string summaryJson(const RunSummary& summary, const BatchOptions& options) 
             {"skipped", summary.skipped},
             {"interrupted", summary.interrupted},
             {"seconds", summary.seconds},
+            {"coco", options.coco.empty() ? Json(nullptr) : Json(options.coco.string())},
             {"images", std::move(rows)}};
   return j.dump(1) + "\n";
 }
@@ -189,9 +205,10 @@ std::string reportHtml(const RunSummary& summary, const BatchOptions& options) {
     os << "<table><tr><th>tags</th><th>ROI px&sup2;</th><th>contours in/out</th>"
        << "<th>clipped px&sup2;</th><th>IoU</th><th>off-band</th><th>s</th></tr><tr><td>"
        << r.tagsFound << "</td><td>" << fmt(r.roiArea, 1) << "</td><td>" << r.contoursIn << "/"
-       << r.contoursOut << "</td><td>" << fmt(r.clippedArea, 1) << "</td><td>" << fmt(r.iou, 4)
-       << "</td><td>" << r.offBandMismatches << "</td><td>"
-       << (r.skipped ? std::string("skipped") : fmt(r.seconds, 3)) << "</td></tr></table>"
+       << r.contoursOut << "</td><td>" << fmt(r.clippedArea, 1) << "</td><td>"
+       << (r.iou ? fmt(*r.iou, 4) : std::string()) << "</td><td>" << r.offBandMismatches
+       << "</td><td>" << (r.skipped ? std::string("skipped") : fmt(r.seconds, 3))
+       << "</td></tr></table>"
        << "<a href=\"" << urlEncode(r.name) << ".json\">JSON</a></figcaption></figure>\n";
   }
   os << "</body></html>\n";

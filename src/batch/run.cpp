@@ -14,8 +14,9 @@
 #include <roiclip/batch/process.hpp>
 #include <roiclip/io/atomic_file.hpp>
 
+#include "detail/coco.hpp"
 #include "detail/folder.hpp"
-#include "detail/image_file.hpp"
+#include "detail/process.hpp"
 #include "detail/report.hpp"
 #include "detail/result_json.hpp"
 
@@ -25,7 +26,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
+using detail::Clock;
 using detail::Job;
+using detail::secondsSince;
 using io::writeFileAtomically;
 
 std::string encodePng(const cv::Mat& image, const std::string& what) {
@@ -65,34 +68,38 @@ class Runner {
       }
     }
 
-    ImageResult result;
+    const auto start = Clock::now();
     cv::Mat image;
-    try {
-      image = readImage(job.image.string(), options_.process.maxPixels);
-    } catch (const ImageTooLargeError& e) {
-      result.status = Status::Failed;
-      result.failure = FailureKind::TooLarge;
-      result.reason = e.what();
-    } catch (const InvalidInputError& e) {
-      result.status = Status::Failed;
-      result.failure = FailureKind::Unreadable;
-      result.reason = e.what();
-    }
-    if (!image.empty()) result = processor.process(image);
+    ImageResult result = processor.processFile(job.image.string(), &image);
     // An overlay only for images the pipeline could read (it sets the size then).
+    std::string overlay, mask;
+    auto t = Clock::now();
     if (result.width > 0) {
-      writeFileAtomically(overlayFile,
-                          encodePng(renderOverlay(image, result), overlayFile.string()));
+      overlay = encodePng(renderOverlay(image, result), overlayFile.string());
       if (options_.writeMasks && !result.roi.empty()) {
-        writeFileAtomically(
-            maskFile, encodePng(renderMask(result, options_.process.grid), maskFile.string()));
+        mask = encodePng(renderMask(result, options_.process.grid), maskFile.string());
       }
+    }
+    result.seconds.overlay = secondsSince(t);
+    t = Clock::now();
+    if (!overlay.empty()) {
+      writeFileAtomically(overlayFile, overlay);
+      if (!mask.empty()) writeFileAtomically(maskFile, mask);
     } else {
       fs::remove(overlayFile, ec);  // a stale overlay from an earlier run would mislead
     }
-    // NAME.json last: its presence with status ok is what marks the image as complete.
-    writeFileAtomically(jsonFile, detail::resultToJson(result, job.rel, key_));
-    return detail::recordOf(result);
+    result.seconds.write = secondsSince(t);
+    result.seconds.total = secondsSince(start);
+    // NAME.json last: its presence with status ok is what marks the image as complete. Its own
+    // write time is only in the summary's row (NAME.json cannot hold it).
+    t = Clock::now();
+    writeFileAtomically(jsonFile, resultToJson(result, job.rel, key_));
+    ImageRecord record = detail::recordOf(result);
+    const double jsonWrite = secondsSince(t);
+    record.stageSeconds.write += jsonWrite;
+    record.stageSeconds.total += jsonWrite;
+    record.seconds = record.stageSeconds.total;
+    return record;
   }
 
   RunSummary run(const ProgressCallback& progress, const std::atomic<bool>* cancel) {
@@ -224,6 +231,11 @@ RunSummary run(const BatchOptions& options, const ProgressCallback& progress,
   writeFileAtomically(options.output / "summary.json", detail::summaryJson(summary, options));
   if (options.writeReport) {
     writeFileAtomically(options.output / "report.html", detail::reportHtml(summary, options));
+  }
+  if (!options.coco.empty()) {
+    // A folder that cannot be made is reported by the write, naming the file.
+    if (options.coco.has_parent_path()) fs::create_directories(options.coco.parent_path(), ec);
+    writeFileAtomically(options.coco, detail::cocoJson(summary, options));
   }
   return summary;
 }

@@ -2,6 +2,7 @@
 // every per-image failure path.
 #include <cmath>
 #include <fstream>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -335,7 +336,7 @@ TEST(BatchOptions, MinAreaDropsSmallContours) {
 TEST(BatchJson, ResultJsonHasEveryFigure) {
   const cv::Mat image = cv::imread(kImages + "/scene_07.png", cv::IMREAD_GRAYSCALE);
   const rb::ImageResult r = rb::processImage(image, kDefaults);
-  const Json j = Json::parse(rb::detail::resultToJson(r, "scene_07.png"));
+  const Json j = Json::parse(rb::resultToJson(r, "scene_07.png"));
   EXPECT_EQ(j["image"], "scene_07.png");
   EXPECT_EQ(j["status"], "ok");
   EXPECT_EQ(j["tags"].size(), 4u);
@@ -343,16 +344,47 @@ TEST(BatchJson, ResultJsonHasEveryFigure) {
   EXPECT_DOUBLE_EQ(j["clipped_area"].get<double>(), r.clippedArea);
   EXPECT_EQ(j["mask_check"]["off_band_mismatches"], 0);
   ASSERT_TRUE(j["mask_check"].contains("opencv"));
-  // The polygons in the JSON give back the clipped area.
+  EXPECT_EQ(j["schema_version"], rb::kSchemaVersion);
+  EXPECT_EQ(j["roiclip_version"], rb::roiclipVersion());
+  // The GeoJSON features give back the clipped area: closed rings, outer ring first.
+  ASSERT_EQ(j["clipped"]["type"], "FeatureCollection");
+  const Json& features = j["clipped"]["features"];
+  ASSERT_EQ(features.size(), r.clipped.polygons.size());
   roiclip::PolygonSet back;
-  for (const auto& p : j["clipped"]) {
+  std::set<int> contours;
+  for (const auto& f : features) {
+    EXPECT_EQ(f["type"], "Feature");
+    EXPECT_EQ(f["geometry"]["type"], "Polygon");
+    roiclip::Paths rings = pathsFrom(f["geometry"]["coordinates"]);
+    for (roiclip::Path& ring : rings) {
+      ASSERT_GE(ring.size(), 4u);
+      EXPECT_EQ(ring.front(), ring.back());
+      ring.pop_back();
+    }
     roiclip::Polygon poly;
-    poly.outer = pathsFrom(Json::array({p["outer"]}))[0];
-    poly.holes = pathsFrom(p["holes"]);
+    poly.outer = rings[0];
+    poly.holes.assign(rings.begin() + 1, rings.end());
+    EXPECT_EQ(f["properties"]["holes"], poly.holes.size());
+    roiclip::PolygonSet one;
+    one.polygons.push_back(poly);
+    EXPECT_NEAR(f["properties"]["area"].get<double>(), one.area(), 1e-9 * one.area());
     back.polygons.push_back(poly);
+    // Every polygon is traced to its source contour (they do not touch in this scene).
+    ASSERT_TRUE(f["properties"]["contour_index"].is_number_integer()) << f["properties"];
+    contours.insert(f["properties"]["contour_index"].get<int>());
+    EXPECT_EQ(f["properties"]["rois"], Json::array({"hull"}));
   }
   EXPECT_NEAR(back.area(), r.clippedArea, 1e-6 * r.clippedArea);
-  EXPECT_EQ(static_cast<int>(j["contours"].size()), r.contoursOut);
+  EXPECT_EQ(static_cast<int>(contours.size()), r.contoursOut);
+  ASSERT_EQ(static_cast<int>(j["contours"].size()), r.contoursOut);
+  std::size_t linked = 0;
+  for (const auto& c : j["contours"]) {
+    for (const auto& i : c["features"]) {
+      EXPECT_EQ(features[i.get<std::size_t>()]["properties"]["contour_index"], c["contour_index"]);
+      ++linked;
+    }
+  }
+  EXPECT_EQ(linked, features.size());
 }
 
 }  // namespace
@@ -383,7 +415,7 @@ TEST(BatchEdges, SceneEdgesAreClippedToTheRoi) {
   // The window holds the figure-eight stroke and the frame: their edges are most of the
   // clipped length, at least the window-clipped contour perimeter's order of magnitude.
   EXPECT_GT(r.edgeLength, 100.0);
-  const Json j = Json::parse(rb::detail::resultToJson(r, "scene_01.png"));
+  const Json j = Json::parse(rb::resultToJson(r, "scene_01.png"));
   EXPECT_DOUBLE_EQ(j["edges"]["length"].get<double>(), r.edgeLength);
 }
 

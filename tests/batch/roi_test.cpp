@@ -175,7 +175,7 @@ TEST(BatchRoi, BoardRoisAreSeparateAndTheirUnionIsTheRegion) {
   EXPECT_NE(csv.find(",inspection,0\n"), std::string::npos) << csv;
   EXPECT_NE(csv.find(",window,0\n"), std::string::npos) << csv;
   // NAME.json carries them and reads back.
-  const auto back = rb::detail::parseRecord(rb::detail::resultToJson(r, "scene_01.png"));
+  const auto back = rb::detail::parseRecord(rb::resultToJson(r, "scene_01.png"));
   ASSERT_TRUE(back.has_value());
   ASSERT_EQ(back->rois.size(), 2u);
   EXPECT_EQ(back->rois[1].name, "window");

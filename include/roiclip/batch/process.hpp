@@ -36,6 +36,8 @@ struct ContourResult {
   double inputArea = 0;   ///< area of `input` under the subject fill rule (px^2)
   PolygonSet clipped;     ///< input AND ROI
   double clippedArea = 0;
+  /// Indices into ImageResult::rois of the named ROIs this contour has a part inside.
+  std::vector<int> rois;
 };
 
 /// One named ROI of the run: each spec of RunOptions::rois ("board" alone gives one per board
@@ -49,9 +51,19 @@ struct RoiRegion {
   double clippedArea = 0;  ///< area of the contours' parts inside `region`
 };
 
-/// Seconds spent in each stage.
+/// Seconds spent in each stage of one image, in pipeline order. Processor::process() fills
+/// detect to check; processFile() also `read`; `roiclip run` (batch::run) also overlay and write.
+/// The stages cover the whole image: total is their sum but for a little glue (checks, moves).
 struct StageTimes {
-  double detect = 0, roi = 0, contours = 0, clip = 0, check = 0, total = 0;
+  double read = 0;      ///< reading and decoding the image file
+  double detect = 0;    ///< conversion to 8-bit gray and AprilTag detection
+  double roi = 0;       ///< building the region from the tags
+  double contours = 0;  ///< cv::findContours and friends
+  double clip = 0;      ///< exact clipping of every contour (and the Canny edges)
+  double check = 0;     ///< the mask check
+  double overlay = 0;   ///< rendering and PNG-encoding NAME.overlay.png and NAME.mask.png
+  double write = 0;     ///< writing the output files
+  double total = 0;     ///< the whole image, from the first stage to the last
 };
 
 /// Everything processImage() found; filled as far as the pipeline got.
@@ -113,6 +125,13 @@ class Processor {
   /// propagates.
   [[nodiscard]] ImageResult process(const cv::Mat& image) const;
 
+  /// Read an image file as `roiclip run` does (its header checked against
+  /// RunOptions::maxPixels before decoding; see docs/outputs.md) and process it. A file that
+  /// cannot be read gives Status::Failed with FailureKind::Unreadable or TooLarge and a reason
+  /// naming the file; seconds.read is the time spent reading and decoding.
+  /// @param image receives the decoded image (empty when unreadable), e.g. for renderOverlay().
+  [[nodiscard]] ImageResult processFile(const std::string& file, cv::Mat* image = nullptr) const;
+
   [[nodiscard]] const RunOptions& options() const;
 
  private:
@@ -123,6 +142,22 @@ class Processor {
 /// One-shot convenience: Processor(options).process(image). Options problems (bad ROI spec,
 /// unreadable board file) are reported as Status::Failed with FailureKind::InvalidInput.
 ImageResult processImage(const cv::Mat& image, const RunOptions& options);
+
+/// The version of the layout of every output JSON (NAME.json, summary.json, the COCO file), in
+/// their "schema_version" member (docs/outputs.md). Version 1 was the layout before roiclip 0.2,
+/// which had no such member.
+constexpr int kSchemaVersion = 2;
+
+/// The roiclip version that wrote an output ("0.1.0"); every output JSON carries it.
+const char* roiclipVersion();
+
+/// One image's record as NAME.json holds it (docs/outputs.md): status, reason, size, tags,
+/// ROIs, the clipped polygons as a GeoJSON FeatureCollection in pixel coordinates, every figure
+/// and the stage times, as one line of JSON text. `imageName` is stored as "image" (the path
+/// relative to the run's input folder in `roiclip run`), `optionsKey` (when not empty) as
+/// "options" (see optionsKey()).
+std::string resultToJson(const ImageResult& result, const std::string& imageName = {},
+                         const std::string& optionsKey = {});
 
 /// The overlay image: the input (as BGR, 8-bit) dimmed outside the ROI, the ROI outline, every
 /// clipped region filled in a translucent colour with its outline, tag outlines and ids, and a

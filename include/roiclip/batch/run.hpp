@@ -8,6 +8,8 @@
 //   summary.csv        one row per image (ImageRecord's fields)
 //   summary.json       the same rows plus run totals
 //   report.html        every overlay with its figures
+//   BatchOptions::coco  the run as COCO instance annotations (only when asked; any path)
+// docs/outputs.md documents every file and field.
 // NAME is the image's path relative to the input folder without its extension (with it when
 // two images would otherwise share a name), so sub-folders are mirrored with `recursive`.
 #pragma once
@@ -16,10 +18,12 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <roiclip/batch/options.hpp>
+#include <roiclip/batch/process.hpp>  // StageTimes
 
 namespace roiclip::batch {
 
@@ -33,6 +37,9 @@ struct BatchOptions {
   bool force = false;            ///< reprocess images whose outputs are complete and up to date
   bool writeMasks = false;       ///< also write NAME.mask.png
   bool writeReport = true;       ///< write report.html
+  /// When not empty: also write the whole run as one COCO instance-annotation file here
+  /// (docs/outputs.md), atomically, after the summary.
+  std::filesystem::path coco;
 };
 
 /// The figures of one named ROI of an image (RoiRegion).
@@ -58,9 +65,13 @@ struct ImageRecord {
   double roiArea = 0;
   int contoursIn = 0, contoursOut = 0;
   double clippedArea = 0;
-  double iou = 1.0;                    ///< exact raster route
+  /// Exact raster route; nothing when the mask check did not run (failed and no-roi images).
+  std::optional<double> iou;
   std::int64_t offBandMismatches = 0;  ///< over all comparisons
-  double seconds = 0;                  ///< processing time (0 when skipped)
+  double seconds = 0;                  ///< stageSeconds.total (0 when skipped)
+  /// Per stage; in a run, `write` includes writing NAME.json (which NAME.json's own "seconds"
+  /// cannot). All 0 when skipped.
+  StageTimes stageSeconds;
 };
 
 /// Progress, reported after every image (from worker threads, one call at a time).
