@@ -98,6 +98,7 @@ std::optional<ImageRecord> recordFromJson(const Json& j) {
     if (!status || !failure) return std::nullopt;
     ImageRecord r;
     r.image = j.at("image").get<std::string>();
+    r.frame = j.value("frame", -1);
     r.status = *status;
     r.failure = *failure;
     r.reason = j.at("reason").get<std::string>();
@@ -125,9 +126,10 @@ std::optional<ImageRecord> recordFromJson(const Json& j) {
 }  // namespace
 
 std::string resultToJson(const ImageResult& r, const std::string& imageName,
-                         const std::string& optionsKey) {
+                         const std::string& optionsKey, int frame) {
   Json j;
   j["image"] = imageName;
+  if (frame >= 0) j["frame"] = frame;
   if (!optionsKey.empty()) j["options"] = optionsKey;
   j["status"] = toString(r.status);
   j["failure"] = toString(r.failure);
