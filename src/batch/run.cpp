@@ -12,6 +12,7 @@
 #include <opencv2/core/utility.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/videoio.hpp>
+#include <opencv2/videoio/registry.hpp>
 
 #include <roiclip/batch/process.hpp>
 #include <roiclip/io/atomic_file.hpp>
@@ -173,8 +174,9 @@ class Runner {
     const std::optional<fs::file_time_type> videoTime = modified(job.image);
     // FFmpeg when OpenCV has it: the other backends (GStreamer, image sequences) would read
     // the same file differently, or a single image as a video.
-    cv::VideoCapture capture;
-    if (!capture.open(job.image.string(), cv::CAP_FFMPEG)) capture.open(job.image.string());
+    cv::VideoCapture capture(job.image.string(), cv::videoio_registry::hasBackend(cv::CAP_FFMPEG)
+                                                     ? cv::CAP_FFMPEG
+                                                     : cv::CAP_ANY);
     if (!capture.isOpened())
       return failed("cannot open video (no cv::VideoCapture backend reads it)");
     const std::size_t every = static_cast<std::size_t>(options_.every);
