@@ -157,10 +157,10 @@ class Runner {
   // Every `every`-th frame of a video, read in order by this one worker. Returns false when
   // cancelled before the video's end.
   bool processVideo(const Processor& processor, const Job& job, const Sink& sink) const {
-    const auto failed = [&](const std::string& reason) {
+    // One failed row for the whole video, under the video's NAME.
+    const auto failed = [&](const std::string& reason, FailureKind kind = FailureKind::Unreadable) {
       ImageRecord rec =
-          finish(processor, cv::Mat(),
-                 unreadable(FailureKind::Unreadable, job.image.string() + ": " + reason),
+          finish(processor, cv::Mat(), unreadable(kind, job.image.string() + ": " + reason),
                  prepare(job.name), job, -1);
       rec.name = job.name;
       sink.count(1);
@@ -179,9 +179,22 @@ class Runner {
                                                      : cv::CAP_ANY);
     if (!capture.isOpened())
       return failed("cannot open video (no cv::VideoCapture backend reads it)");
+    // The frame size from the container, before a frame is decoded (as an image's header).
+    const auto width = static_cast<std::int64_t>(capture.get(cv::CAP_PROP_FRAME_WIDTH));
+    const auto height = static_cast<std::int64_t>(capture.get(cv::CAP_PROP_FRAME_HEIGHT));
+    const std::int64_t maxPixels = options_.process.maxPixels;
+    if (maxPixels > 0 && width * height > maxPixels) {
+      return failed("video frames " + std::to_string(width) + " x " + std::to_string(height) +
+                        " = " + std::to_string(width * height) +
+                        " pixels, more than the limit of " + std::to_string(maxPixels) +
+                        " (--max-pixels); not decoded",
+                    FailureKind::TooLarge);
+    }
     const std::size_t every = static_cast<std::size_t>(options_.every);
     const double stated = capture.get(cv::CAP_PROP_FRAME_COUNT);
-    if (stated >= 1) sink.count((static_cast<std::size_t>(stated) + every - 1) / every);
+    if (stated >= 1 && stated < 1e9) {
+      sink.count((static_cast<std::size_t>(stated) + every - 1) / every);
+    }
 
     std::size_t rows = 0;
     cv::Mat frame;

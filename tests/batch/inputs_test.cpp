@@ -464,6 +464,15 @@ TEST(BatchInputs, VideoGivesOneRowPerFrameAndResumesPerFrame) {
   EXPECT_EQ(resumed.skipped, 2u);
   EXPECT_TRUE(resumed.allOk());
 
+  // Frames over the pixel limit: refused from the container's frame size, one row.
+  rb::BatchOptions small = optionsFor({video}, tmp.path() / "small");
+  small.process.maxPixels = 1000;
+  const rb::RunSummary refused = rb::run(small);
+  ASSERT_EQ(refused.images.size(), 1u);
+  EXPECT_EQ(refused.images[0].failure, rb::FailureKind::TooLarge);
+  EXPECT_EQ(refused.images[0].name, "scenes");
+  EXPECT_NE(refused.images[0].reason.find("800 x 600"), std::string::npos);
+
   // Not a video after all: one failed row, the run carries on.
   writeText(tmp.path() / "bad" / "broken.mp4", "not a video");
   const rb::RunSummary broken = rb::run(optionsFor({tmp.path() / "bad"}, tmp.path() / "bad_out"));
