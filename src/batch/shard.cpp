@@ -2,7 +2,6 @@
 #include "detail/shard.hpp"
 
 #include <algorithm>
-#include <cerrno>
 #include <cstdlib>
 
 #include <roiclip/error.hpp>
