@@ -150,7 +150,7 @@ class RunCommand {
     namespace batch = roiclip::batch;
     batch::BatchOptions options;
     try {
-      options.input = input_;
+      options.inputs = {input_};
       options.output = output_;
       options.jobs = jobs_;
       options.recursive = recursive_;
@@ -231,7 +231,7 @@ class RunCommand {
       return roiclip::app::kExitInterrupted;
     }
     if (summary.total == 0) {
-      std::cerr << "roiclip run: error: no images found in " << options.input.string() << "\n";
+      std::cerr << "roiclip run: error: no images found in " << input_ << "\n";
       return roiclip::app::kExitBadInput;
     }
     return summary.allOk() ? roiclip::app::kExitOk : roiclip::app::kExitImagesFailed;

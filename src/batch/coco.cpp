@@ -18,6 +18,7 @@
 
 #include <roiclip/opencv/rasterize.hpp>
 
+#include "detail/report.hpp"
 #include "detail/result_json.hpp"
 
 namespace roiclip::batch::detail {
@@ -170,8 +171,7 @@ std::string cocoJson(const RunSummary& summary, const BatchOptions& options) {
        "pixel, x right, y down, origin at the top-left corner of the top-left pixel (COCO's; "
        "NAME.json's coordinates + 0.5)"},
       {"info",
-       {{"description", "roiclip run of " + options.input.string()},
-        {"version", roiclipVersion()}}},
+       {{"description", "roiclip run of " + inputList(options)}, {"version", roiclipVersion()}}},
       {"licenses", Json::array()},
       {"images", std::move(images)},
       {"annotations", std::move(annotations)},

@@ -6,9 +6,12 @@
 // header is read here with the very libraries Debian's OpenCV decodes these formats with
 // (libpng, libjpeg-turbo, libtiff, libwebp; all come with libopencv-dev), through their own
 // header-only entry points: png_read_info, jpeg_read_header, TIFFOpenExt (first directory only)
-// and WebPGetFeatures. The size they report is the size OpenCV would allocate.
+// and WebPGetFeatures. The size they report is the size OpenCV would allocate. The JPEG and
+// PNG readers also pick up the EXIF orientation, which imread ignores with IMREAD_UNCHANGED (the
+// only flag that keeps 16-bit and alpha), so the run applies it itself.
 #include "detail/image_file.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <csetjmp>
 #include <cstdio>
@@ -16,11 +19,13 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <vector>
 
 #include <jpeglib.h>
 #include <png.h>
 #include <tiffio.h>
 #include <webp/decode.h>
+#include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 
 namespace roiclip::batch {
@@ -65,6 +70,11 @@ bool readPngHeader(FILE* f, ImageHeader& h) {
   h.width = png_get_image_width(png, info);
   h.height = png_get_image_height(png, info);
   h.channels = png_get_channels(png, info);
+  png_uint_32 exifSize = 0;
+  png_bytep exif = nullptr;
+  if (png_get_eXIf_1(png, info, &exifSize, &exif) != 0 && exif) {
+    h.orientation = exifOrientation(exif, exifSize);
+  }
   png_destroy_read_struct(&png, &info, nullptr);
   return true;
 }
@@ -91,10 +101,18 @@ bool readJpegHeader(FILE* f, ImageHeader& h) {
   }
   jpeg_create_decompress(&info);
   jpeg_stdio_src(&info, f);
+  jpeg_save_markers(&info, JPEG_APP0 + 1, 0xFFFF);
   jpeg_read_header(&info, TRUE);
   h.width = info.image_width;
   h.height = info.image_height;
   h.channels = info.num_components;
+  for (jpeg_saved_marker_ptr m = info.marker_list; m; m = m->next) {
+    if (m->marker == JPEG_APP0 + 1 && m->data_length > 6 &&
+        std::memcmp(m->data, "Exif\0\0", 6) == 0) {
+      h.orientation = exifOrientation(m->data + 6, m->data_length - 6);
+      break;  // the first Exif segment, as OpenCV
+    }
+  }
   jpeg_destroy_decompress(&info);
   return true;
 }
@@ -156,6 +174,80 @@ std::string upper(std::string s) {
 }
 
 }  // namespace
+
+int exifOrientation(const unsigned char* data, std::size_t size) {
+  if (size < 8) return 1;
+  const bool little = data[0] == 'I' && data[1] == 'I';
+  if (!little && !(data[0] == 'M' && data[1] == 'M')) return 1;
+  const auto u16 = [&](std::size_t at) -> unsigned {
+    return little ? data[at] | (data[at + 1] << 8) : (data[at] << 8) | data[at + 1];
+  };
+  const auto u32 = [&](std::size_t at) -> std::uint32_t {
+    return little ? u16(at) | (static_cast<std::uint32_t>(u16(at + 2)) << 16)
+                  : (static_cast<std::uint32_t>(u16(at)) << 16) | u16(at + 2);
+  };
+  if (u16(2) != 42) return 1;
+  const std::uint32_t ifd = u32(4);
+  if (ifd > size - 2) return 1;
+  const unsigned entries = u16(ifd);
+  for (unsigned i = 0; i < entries; ++i) {
+    const std::size_t at = ifd + 2 + 12 * static_cast<std::size_t>(i);
+    if (at + 12 > size) return 1;
+    constexpr unsigned kOrientation = 0x0112, kShort = 3;
+    if (u16(at) == kOrientation && u16(at + 2) == kShort) {
+      const unsigned value = u16(at + 8);
+      return value >= 1 && value <= 8 ? static_cast<int>(value) : 1;
+    }
+  }
+  return 1;
+}
+
+void applyExifOrientation(cv::Mat& image, int orientation) {
+  // The EXIF table: 2 mirrored, 3 rotated 180, 4 flipped; 5..8 are those after a transpose.
+  if (orientation >= 5 && orientation <= 8) cv::transpose(image, image);
+  switch (orientation) {
+    case 2:
+    case 6:
+      cv::flip(image, image, 1);
+      break;
+    case 3:
+    case 7:
+      cv::flip(image, image, -1);
+      break;
+    case 4:
+    case 8:
+      cv::flip(image, image, 0);
+      break;
+    default:
+      break;
+  }
+}
+
+void scaleToSignificantBits(cv::Mat& image) {
+  if (image.empty() || image.depth() != CV_16U) return;
+  const int channels = image.channels();
+  const int colours = (channels == 2 || channels == 4) ? channels - 1 : channels;
+  double largest = 0;
+  cv::Mat plane;
+  for (int c = 0; c < colours; ++c) {
+    cv::extractChannel(image, plane, c);
+    double high = 0;
+    cv::minMaxLoc(plane, nullptr, &high);
+    largest = std::max(largest, high);
+  }
+  int bits = 8;
+  while (bits < 16 && largest > static_cast<double>((1 << bits) - 1)) ++bits;
+  if (bits == 16) return;
+  const double gain = 65535.0 / static_cast<double>((1 << bits) - 1);
+  if (colours == channels) {
+    image.convertTo(image, CV_16U, gain);
+    return;
+  }
+  std::vector<cv::Mat> planes;
+  cv::split(image, planes);
+  for (int c = 0; c < colours; ++c) planes[c].convertTo(planes[c], CV_16U, gain);
+  cv::merge(planes, image);
+}
 
 std::optional<ImageHeader> readImageHeader(const std::string& path) {
   const std::string magic = readBytes(path, 64);
@@ -231,6 +323,8 @@ cv::Mat readImage(const std::string& path, std::int64_t maxPixels) {
   if (maxPixels > 0 && static_cast<std::int64_t>(image.total()) > maxPixels) {
     throw tooLarge(image.cols, image.rows, "decoded image is");
   }
+  if (header) applyExifOrientation(image, header->orientation);
+  scaleToSignificantBits(image);
   return image;
 }
 

@@ -10,6 +10,12 @@
 
 namespace roiclip::batch::detail {
 
+std::string inputList(const BatchOptions& options) {
+  std::string out;
+  for (const auto& input : options.inputs) out += (out.empty() ? "" : " ") + input.string();
+  return out;
+}
+
 namespace {
 
 std::string roiList(const RunOptions& options) {
@@ -148,7 +154,7 @@ std::string summaryJson(const RunSummary& summary, const BatchOptions& options) 
   const RunOptions& p = options.process;
   Json j = {{"schema_version", kSchemaVersion},
             {"roiclip_version", roiclipVersion()},
-            {"input", options.input.string()},
+            {"input", inputList(options)},
             {"output", options.output.string()},
             {"options",
              {{"roi", p.rois},
@@ -179,13 +185,13 @@ std::string summaryJson(const RunSummary& summary, const BatchOptions& options) 
 std::string reportHtml(const RunSummary& summary, const BatchOptions& options) {
   std::ostringstream os;
   os << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">"
-     << "<title>roiclip run: " << htmlEscape(options.input.string()) << "</title>\n"
+     << "<title>roiclip run: " << htmlEscape(inputList(options)) << "</title>\n"
      << "<style>body{font-family:sans-serif;margin:1em;background:#f4f4f4}"
      << "figure{display:inline-block;vertical-align:top;margin:.5em;padding:.5em;"
      << "background:#fff;max-width:48%}figure img{max-width:100%}"
      << "table{border-collapse:collapse;font-size:90%}td,th{padding:.1em .5em;text-align:right}"
      << ".bad{color:#b00}</style></head><body>\n"
-     << "<h1>roiclip run</h1>\n<p>Input <code>" << htmlEscape(options.input.string())
+     << "<h1>roiclip run</h1>\n<p>Input <code>" << htmlEscape(inputList(options))
      << "</code>, ROI <code>" << htmlEscape(roiList(options.process)) << "</code>, contours <code>"
      << toString(options.process.contours.method) << "</code>, fill rule <code>"
      << toString(options.process.subjectFillRule) << "</code>. " << summary.images.size() << " of "

@@ -195,6 +195,7 @@ std::optional<ImageRecord> recordFromJson(const Json& j) {
     if (!status || !failure) return std::nullopt;
     ImageRecord r;
     r.image = j.at("image").get<std::string>();
+    r.frame = j.value("frame", -1);
     r.status = *status;
     r.failure = *failure;
     r.reason = j.at("reason").get<std::string>();
@@ -304,7 +305,7 @@ std::optional<std::vector<ClippedFeature>> readClipped(const std::filesystem::pa
 }  // namespace detail
 
 std::string resultToJson(const ImageResult& r, const std::string& imageName,
-                         const std::string& optionsKey) {
+                         const std::string& optionsKey, int frame) {
   using detail::Json;
   const std::vector<const ContourResult*> sources = detail::sourceContours(r);
   Json j;
@@ -312,6 +313,7 @@ std::string resultToJson(const ImageResult& r, const std::string& imageName,
   j["roiclip_version"] = roiclipVersion();
   j["coordinates"] = detail::kPixelCoordinates;
   j["image"] = imageName;
+  if (frame >= 0) j["frame"] = frame;
   if (!optionsKey.empty()) j["options"] = optionsKey;
   j["status"] = toString(r.status);
   j["failure"] = toString(r.failure);

@@ -1,4 +1,5 @@
-// `roiclip run`: a folder of images through the per-image pipeline, in parallel, resumable.
+// `roiclip run`: folders, files and videos through the per-image pipeline, in parallel,
+// resumable (per image and per video frame), shardable.
 #include <roiclip/batch/run.hpp>
 
 #include <algorithm>
@@ -10,15 +11,19 @@
 
 #include <opencv2/core/utility.hpp>
 #include <opencv2/imgcodecs.hpp>
+#include <opencv2/videoio.hpp>
+#include <opencv2/videoio/registry.hpp>
 
 #include <roiclip/batch/process.hpp>
 #include <roiclip/io/atomic_file.hpp>
 
 #include "detail/coco.hpp"
 #include "detail/folder.hpp"
+#include "detail/image_file.hpp"
 #include "detail/process.hpp"
 #include "detail/report.hpp"
 #include "detail/result_json.hpp"
+#include "detail/shard.hpp"
 
 namespace roiclip::batch {
 
@@ -44,62 +49,205 @@ bool notOlder(const fs::path& output, const fs::file_time_type& inputTime) {
   return !ec && t >= inputTime;
 }
 
+// The files of one output NAME.
+struct OutputFiles {
+  fs::path json, overlay, mask;
+  OutputFiles(const fs::path& folder, const std::string& name) {
+    const std::string base = (folder / fs::path(name)).string();
+    json = base + ".json";
+    overlay = base + ".overlay.png";
+    mask = base + ".mask.png";
+  }
+};
+
+// "NAME.f000123": a video frame's output NAME.
+std::string frameName(const std::string& videoName, int frame) {
+  std::string digits = std::to_string(frame);
+  if (digits.size() < 6) digits.insert(0, 6 - digits.size(), '0');
+  return videoName + ".f" + digits;
+}
+
+// A failed result for a file that could not be read.
+ImageResult unreadable(FailureKind kind, const std::string& reason) {
+  ImageResult result;
+  result.status = Status::Failed;
+  result.failure = kind;
+  result.reason = reason;
+  return result;
+}
+
 class Runner {
  public:
   Runner(const BatchOptions& options, std::vector<Job> jobs)
       : options_(options), jobs_(std::move(jobs)), key_(optionsKey(options.process)) {}
 
-  ImageRecord processOne(const Processor& processor, const Job& job) const {
-    const fs::path base = options_.output / fs::path(job.name);
-    const fs::path jsonFile = base.string() + ".json";
-    const fs::path overlayFile = base.string() + ".overlay.png";
-    const fs::path maskFile = base.string() + ".mask.png";
-    std::error_code ec;
-    fs::create_directories(jsonFile.parent_path(), ec);
-    if (ec)
-      throw Error("cannot create output folder " + jsonFile.parent_path().string() + ": " +
-                  ec.message());
+  // Called with each finished row of a job (in order) and, for a video, with its frame count as
+  // far as it is known (count() before and after reading it).
+  struct Sink {
+    std::function<void(ImageRecord)> row;
+    std::function<void(std::size_t)> count;
+    std::function<bool()> cancelled;
+  };
 
-    if (!options_.force) {
-      const auto inputTime = fs::last_write_time(job.image, ec);
-      if (!ec && notOlder(jsonFile, inputTime) && notOlder(overlayFile, inputTime) &&
-          (!options_.writeMasks || notOlder(maskFile, inputTime))) {
-        if (auto rec = detail::readRecord(jsonFile, key_)) return *rec;
-      }
+  // The row of an up-to-date NAME (outputs complete, newer than the input, same options).
+  std::optional<ImageRecord> upToDate(const OutputFiles& files,
+                                      const std::optional<fs::file_time_type>& inputTime) const {
+    if (options_.force || !inputTime) return std::nullopt;
+    if (!notOlder(files.json, *inputTime) || !notOlder(files.overlay, *inputTime) ||
+        (options_.writeMasks && !notOlder(files.mask, *inputTime))) {
+      return std::nullopt;
     }
+    return detail::readRecord(files.json, key_);
+  }
 
+  // Process `image` (when not empty; else `result` says why not; `readSeconds` is what reading
+  // or decoding it took) and write NAME's files.
+  ImageRecord finish(const Processor& processor, const cv::Mat& image, ImageResult result,
+                     const OutputFiles& files, const Job& job, int frame,
+                     double readSeconds) const {
     const auto start = Clock::now();
-    cv::Mat image;
-    ImageResult result = processor.processFile(job.image.string(), &image);
+    if (!image.empty()) result = processor.process(image);
+    result.seconds.read = readSeconds;
+    std::error_code ec;
     // An overlay only for images the pipeline could read (it sets the size then).
     std::string overlay, mask;
     auto t = Clock::now();
     if (result.width > 0) {
-      overlay = encodePng(renderOverlay(image, result), overlayFile.string());
+      overlay = encodePng(renderOverlay(image, result), files.overlay.string());
       if (options_.writeMasks && !result.roi.empty()) {
-        mask = encodePng(renderMask(result, options_.process.grid), maskFile.string());
+        mask = encodePng(renderMask(result, options_.process.grid), files.mask.string());
       }
     }
     result.seconds.overlay = secondsSince(t);
     t = Clock::now();
     if (!overlay.empty()) {
-      writeFileAtomically(overlayFile, overlay);
-      if (!mask.empty()) writeFileAtomically(maskFile, mask);
+      writeFileAtomically(files.overlay, overlay);
+      if (!mask.empty()) writeFileAtomically(files.mask, mask);
     } else {
-      fs::remove(overlayFile, ec);  // a stale overlay from an earlier run would mislead
+      fs::remove(files.overlay, ec);  // a stale overlay from an earlier run would mislead
     }
     result.seconds.write = secondsSince(t);
-    result.seconds.total = secondsSince(start);
+    result.seconds.total = readSeconds + secondsSince(start);
     // NAME.json last: its presence with status ok is what marks the image as complete. Its own
     // write time is only in the summary's row (NAME.json cannot hold it).
     t = Clock::now();
-    writeFileAtomically(jsonFile, resultToJson(result, job.rel, key_));
+    writeFileAtomically(files.json, resultToJson(result, job.rel, key_, frame));
     ImageRecord record = detail::recordOf(result);
     const double jsonWrite = secondsSince(t);
     record.stageSeconds.write += jsonWrite;
     record.stageSeconds.total += jsonWrite;
     record.seconds = record.stageSeconds.total;
     return record;
+  }
+
+  OutputFiles prepare(const std::string& name) const {
+    OutputFiles files(options_.output, name);
+    std::error_code ec;
+    fs::create_directories(files.json.parent_path(), ec);
+    if (ec) {
+      throw Error("cannot create output folder " + files.json.parent_path().string() + ": " +
+                  ec.message());
+    }
+    return files;
+  }
+
+  static std::optional<fs::file_time_type> modified(const fs::path& file) {
+    std::error_code ec;
+    const auto t = fs::last_write_time(file, ec);
+    if (ec) return std::nullopt;
+    return t;
+  }
+
+  ImageRecord processImageFile(const Processor& processor, const Job& job) const {
+    const OutputFiles files = prepare(job.name);
+    std::optional<ImageRecord> rec = upToDate(files, modified(job.image));
+    if (!rec) {
+      const auto start = Clock::now();
+      cv::Mat image;
+      ImageResult result;
+      try {
+        image = readImage(job.image.string(), options_.process.maxPixels);
+      } catch (const ImageTooLargeError& e) {
+        result = unreadable(FailureKind::TooLarge, e.what());
+      } catch (const InvalidInputError& e) {
+        result = unreadable(FailureKind::Unreadable, e.what());
+      }
+      rec = finish(processor, image, std::move(result), files, job, -1, secondsSince(start));
+    }
+    rec->name = job.name;
+    return *rec;
+  }
+
+  // Every `every`-th frame of a video, read in order by this one worker. Returns false when
+  // cancelled before the video's end.
+  bool processVideo(const Processor& processor, const Job& job, const Sink& sink) const {
+    // One failed row for the whole video, under the video's NAME.
+    const auto failed = [&](const std::string& reason, FailureKind kind = FailureKind::Unreadable) {
+      ImageRecord rec =
+          finish(processor, cv::Mat(), unreadable(kind, job.image.string() + ": " + reason),
+                 prepare(job.name), job, -1, 0.0);
+      rec.name = job.name;
+      sink.count(1);
+      sink.row(std::move(rec));
+      return true;
+    };
+    std::error_code ec;
+    const fs::file_status status = fs::status(job.image, ec);
+    if (!fs::exists(status)) return failed("no such file");
+    if (!fs::is_regular_file(status)) return failed("not a regular file");
+    const std::optional<fs::file_time_type> videoTime = modified(job.image);
+    // FFmpeg when OpenCV has it: the other backends (GStreamer, image sequences) would read
+    // the same file differently, or a single image as a video.
+    cv::VideoCapture capture(job.image.string(), cv::videoio_registry::hasBackend(cv::CAP_FFMPEG)
+                                                     ? cv::CAP_FFMPEG
+                                                     : cv::CAP_ANY);
+    if (!capture.isOpened())
+      return failed("cannot open video (no cv::VideoCapture backend reads it)");
+    // The frame size from the container, before a frame is decoded (as an image's header).
+    const auto width = static_cast<std::int64_t>(capture.get(cv::CAP_PROP_FRAME_WIDTH));
+    const auto height = static_cast<std::int64_t>(capture.get(cv::CAP_PROP_FRAME_HEIGHT));
+    const std::int64_t maxPixels = options_.process.maxPixels;
+    if (maxPixels > 0 && width * height > maxPixels) {
+      return failed("video frames " + std::to_string(width) + " x " + std::to_string(height) +
+                        " = " + std::to_string(width * height) +
+                        " pixels, more than the limit of " + std::to_string(maxPixels) +
+                        " (--max-pixels); not decoded",
+                    FailureKind::TooLarge);
+    }
+    const std::size_t every = static_cast<std::size_t>(options_.every);
+    const double stated = capture.get(cv::CAP_PROP_FRAME_COUNT);
+    if (stated >= 1 && stated < 1e9) {
+      sink.count((static_cast<std::size_t>(stated) + every - 1) / every);
+    }
+
+    std::size_t rows = 0;
+    cv::Mat frame;
+    for (std::size_t k = 0;; ++k) {
+      if (k % every == 0 && sink.cancelled()) return false;
+      if (!capture.grab()) break;
+      if (k % every != 0) continue;
+      const int index = static_cast<int>(k);
+      const std::string name = frameName(job.name, index);
+      const OutputFiles files = prepare(name);
+      std::optional<ImageRecord> rec = upToDate(files, videoTime);
+      if (!rec) {
+        const auto decode = Clock::now();
+        ImageResult result;
+        if (!capture.retrieve(frame) || frame.empty()) {
+          result = unreadable(FailureKind::Unreadable, job.image.string() + ": frame " +
+                                                           std::to_string(k) + ": cannot decode");
+          frame.release();
+        }
+        rec = finish(processor, frame, std::move(result), files, job, index, secondsSince(decode));
+      }
+      rec->name = name;
+      rec->frame = index;
+      ++rows;
+      sink.row(std::move(*rec));
+    }
+    if (rows == 0) return failed("no frame could be decoded");
+    sink.count(rows);
+    return true;
   }
 
   RunSummary run(const ProgressCallback& progress, const std::atomic<bool>* cancel) {
@@ -114,31 +262,58 @@ class Runner {
     // table takes a good part of a second).
     const Processor first(options_.process);
 
-    std::vector<std::optional<ImageRecord>> records(n);
+    // Per job: its rows, whether it was finished, and how many rows it counts for in the total
+    // (1 until a video has been opened).
+    std::vector<std::vector<ImageRecord>> records(n);
+    std::vector<char> finished(n, 0);
+    std::vector<std::size_t> counted(n, 1);
     std::atomic<std::size_t> next{0};
     std::atomic<bool> stop{false};
     std::exception_ptr fatal;
     std::mutex mutex;
     Progress state;
     state.total = n;
+    const auto cancelled = [&] { return stop.load() || (cancel && cancel->load()); };
+    const auto setCount = [&](std::size_t i, std::size_t c) {  // mutex held
+      c = std::max(c, records[i].size());
+      state.total = state.total - counted[i] + c;
+      counted[i] = c;
+    };
 
     const auto work = [&](const Processor& processor) {
-      while (!stop.load() && !(cancel && cancel->load())) {
+      while (!cancelled()) {
         const std::size_t i = next.fetch_add(1);
         if (i >= n) break;
-        try {
-          ImageRecord rec = processOne(processor, jobs_[i]);
-          rec.image = jobs_[i].rel;
-          rec.name = jobs_[i].name;
+        const Job& job = jobs_[i];
+        Sink sink;
+        sink.cancelled = cancelled;
+        sink.count = [&, i](std::size_t c) {
           const std::lock_guard<std::mutex> lock(mutex);
-          records[i] = std::move(rec);
+          setCount(i, c);
+        };
+        sink.row = [&, i](ImageRecord rec) {
+          rec.image = job.rel;
+          const std::lock_guard<std::mutex> lock(mutex);
+          records[i].push_back(std::move(rec));
+          const ImageRecord& last = records[i].back();
+          setCount(i, counted[i]);
           ++state.done;
-          if (records[i]->skipped) ++state.skipped;
-          if (records[i]->status != Status::Ok) ++state.failed;
+          if (last.skipped) ++state.skipped;
+          if (last.status != Status::Ok) ++state.failed;
           state.elapsed =
               std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-          state.last = &*records[i];
+          state.last = &last;
           if (progress) progress(state);
+        };
+        try {
+          bool done = true;
+          if (job.video) {
+            done = processVideo(processor, job, sink);
+          } else {
+            sink.row(processImageFile(processor, job));
+          }
+          const std::lock_guard<std::mutex> lock(mutex);
+          finished[i] = done ? 1 : 0;
         } catch (...) {
           // Writing failed (or worse): the output folder is unusable, stop the run.
           const std::lock_guard<std::mutex> lock(mutex);
@@ -176,27 +351,28 @@ class Runner {
     if (fatal) std::rethrow_exception(fatal);
 
     RunSummary summary;
-    summary.total = n;
-    for (auto& r : records) {
-      if (!r) continue;
-      switch (r->status) {
-        case Status::Ok:
-          ++summary.ok;
-          break;
-        case Status::NoRoi:
-          ++summary.noRoi;
-          break;
-        case Status::Failed:
-          ++summary.failed;
-          break;
-        case Status::MaskMismatch:
-          ++summary.mismatched;
-          break;
+    summary.total = state.total;
+    for (std::size_t i = 0; i < n; ++i) {
+      if (!finished[i]) summary.interrupted = true;
+      for (ImageRecord& r : records[i]) {
+        switch (r.status) {
+          case Status::Ok:
+            ++summary.ok;
+            break;
+          case Status::NoRoi:
+            ++summary.noRoi;
+            break;
+          case Status::Failed:
+            ++summary.failed;
+            break;
+          case Status::MaskMismatch:
+            ++summary.mismatched;
+            break;
+        }
+        if (r.skipped) ++summary.skipped;
+        summary.images.push_back(std::move(r));
       }
-      if (r->skipped) ++summary.skipped;
-      summary.images.push_back(std::move(*r));
     }
-    summary.interrupted = summary.images.size() < n;
     summary.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return summary;
@@ -212,10 +388,13 @@ class Runner {
 
 RunSummary run(const BatchOptions& options, const ProgressCallback& progress,
                const std::atomic<bool>* cancel) {
-  // "in/" lists "in/x.png", which is not relative to "in/" element by element: drop the slash.
-  fs::path input = options.input;
-  while (!input.has_filename() && input.has_relative_path()) input = input.parent_path();
-  std::vector<Job> jobs = detail::listJobs(input, options.output, options.recursive);
+  if (options.every < 1) {
+    throw InvalidInputError("every " + std::to_string(options.every) +
+                            ": need a frame step of at least 1");
+  }
+  // Names are given over all inputs, so every shard names an input alike.
+  std::vector<Job> jobs = detail::selectShard(
+      detail::listJobs(options.inputs, options.output, options.recursive), options.shard);
   std::error_code ec;
   fs::create_directories(options.output, ec);
   if (ec || !fs::is_directory(options.output)) {
@@ -234,6 +413,7 @@ RunSummary run(const BatchOptions& options, const ProgressCallback& progress,
   }
   if (!options.coco.empty()) {
     // A folder that cannot be made is reported by the write, naming the file.
+    std::error_code ec;
     if (options.coco.has_parent_path()) fs::create_directories(options.coco.parent_path(), ec);
     writeFileAtomically(options.coco, detail::cocoJson(summary, options));
   }

@@ -52,7 +52,7 @@ std::vector<roiclip::testing::HostileImage> Hostile::expected_;
 
 TEST_F(Hostile, EveryFileGetsItsStatusAndReasonAndTheRunCarriesOn) {
   rb::BatchOptions o;
-  o.input = dir_ / "in";
+  o.inputs = {dir_ / "in"};
   o.output = dir_ / "out";
   o.jobs = 2;
   o.force = true;

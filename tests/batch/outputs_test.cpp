@@ -116,7 +116,7 @@ struct CocoRun {
     const char* keep = std::getenv("ROICLIP_COCO_OUT");
     coco = keep ? fs::path(keep) : tmp.path() / "coco" / "run.json";
     rb::BatchOptions options;
-    options.input = in;
+    options.inputs = {in};
     options.output = out;
     options.recursive = true;
     options.writeMasks = true;

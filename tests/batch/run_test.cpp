@@ -72,7 +72,7 @@ int hiddenFiles(const fs::path& dir) {
 
 rb::BatchOptions optionsFor(const fs::path& input, const fs::path& output) {
   rb::BatchOptions o;
-  o.input = input;
+  o.inputs = {input};
   o.output = output;
   o.jobs = 2;
   return o;

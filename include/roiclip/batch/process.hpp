@@ -155,9 +155,9 @@ const char* roiclipVersion();
 /// ROIs, the clipped polygons as a GeoJSON FeatureCollection in pixel coordinates, every figure
 /// and the stage times, as one line of JSON text. `imageName` is stored as "image" (the path
 /// relative to the run's input folder in `roiclip run`), `optionsKey` (when not empty) as
-/// "options" (see optionsKey()).
+/// "options" (see optionsKey()), `frame` (a video frame's index, when >= 0) as "frame".
 std::string resultToJson(const ImageResult& result, const std::string& imageName = {},
-                         const std::string& optionsKey = {});
+                         const std::string& optionsKey = {}, int frame = -1);
 
 /// The overlay image: the input (as BGR, 8-bit) dimmed outside the ROI, the ROI outline, every
 /// clipped region filled in a translucent colour with its outline, tag outlines and ids, and a

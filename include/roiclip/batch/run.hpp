@@ -10,8 +10,12 @@
 //   report.html        every overlay with its figures
 //   BatchOptions::coco  the run as COCO instance annotations (only when asked; any path)
 // docs/outputs.md documents every file and field.
-// NAME is the image's path relative to the input folder without its extension (with it when
-// two images would otherwise share a name), so sub-folders are mirrored with `recursive`.
+// NAME is the image's relative path without its extension (with it when two images would
+// otherwise share a name; "~2", "~3", ... after it when even that is taken), so sub-folders are
+// mirrored with `recursive`. The relative path of an image found in a folder input is its path
+// relative to that folder; of an image given as a file (directly, by a glob or in a list file),
+// its file name. A video's frames are NAME.f000123.* (the 0-based frame index, six digits or
+// more), NAME being the video's.
 #pragma once
 
 #include <atomic>
@@ -27,9 +31,38 @@
 
 namespace roiclip::batch {
 
+/// A deterministic share of a run's inputs: shard `index` of `count` (0 <= index < count).
+/// Every input (an image, or a video with all its frames) belongs to exactly one shard, chosen by
+/// FNV-1a 64 of its relative path (UTF-8, '/' separated, as ImageRecord::image) modulo `count`.
+/// The choice depends on nothing else (not on the machine, the order or the other inputs), so N
+/// processes started with the same inputs and index 0..N-1 (a Slurm array, a Kubernetes indexed
+/// Job, GNU parallel) process every input once between them.
+struct Shard {
+  int index = 0;
+  int count = 1;
+};
+
+/// Parse "I/N" (0 <= I < N, e.g. "0/4" .. "3/4").
+/// @throws InvalidInputError quoting the text.
+Shard parseShard(const std::string& text);
+
+/// FNV-1a 64-bit hash of `text`'s bytes (offset basis 14695981039346656037, prime
+/// 1099511628211): the stable hash Shard uses.
+std::uint64_t fnv1a64(const std::string& text);
+
 /// Options of a run.
 struct BatchOptions {
-  std::filesystem::path input;   ///< folder of images
+  /// What to process, in this order (a file reached twice, e.g. through a folder and a glob,
+  /// is processed once, under its first name):
+  ///   - a folder: its image and video files (sub-folders with `recursive`);
+  ///   - an image file (PNG, JPEG, TIFF, ...) or a video file (anything cv::VideoCapture opens,
+  ///     recognised by extension: .mp4, .avi, .mkv, .mov, .webm, ...);
+  ///   - a glob (a path with '*', '?' or '[' that names no file): the files and folders it
+  ///     matches (POSIX glob(3), sorted; hidden names only when the pattern says so);
+  ///   - a list file (.txt, .lst, .list): one path per line, relative to the list file's folder;
+  ///     empty lines and lines starting with '#' are skipped; entries that are missing or
+  ///     unreadable become failed rows (not a failed run).
+  std::vector<std::filesystem::path> inputs;
   std::filesystem::path output;  ///< output folder (created if missing)
   RunOptions process;            ///< per-image pipeline
   int jobs = 0;                  ///< parallel workers; 0 = all hardware threads
@@ -40,6 +73,8 @@ struct BatchOptions {
   /// When not empty: also write the whole run as one COCO instance-annotation file here
   /// (docs/outputs.md), atomically, after the summary.
   std::filesystem::path coco;
+  int every = 1;  ///< videos: process frames 0, every, 2 x every, ... (>= 1)
+  Shard shard;    ///< process only this share of the inputs
 };
 
 /// The figures of one named ROI of an image (RoiRegion).
@@ -52,8 +87,9 @@ struct RoiRecord {
 
 /// One image of the summary (summary.csv has one row per image and ROI).
 struct ImageRecord {
-  std::string image;  ///< path relative to the input folder ('/' separated)
+  std::string image;  ///< relative path ('/' separated; see above); for a frame, the video's
   std::string name;   ///< output NAME (relative to the output folder)
+  int frame = -1;     ///< a video's frame index (0-based); -1 for an image
   Status status = Status::Failed;
   FailureKind failure = FailureKind::Internal;
   std::string reason;
@@ -74,7 +110,10 @@ struct ImageRecord {
   StageTimes stageSeconds;
 };
 
-/// Progress, reported after every image (from worker threads, one call at a time).
+/// Progress, reported after every image (from worker threads, one call at a time). A video's
+/// frames count as images: `total` counts a video not opened yet as one, an open one by the
+/// frame count its container states (CAP_PROP_FRAME_COUNT, divided by BatchOptions::every),
+/// and a finished one by the frames it had.
 struct Progress {
   std::size_t done = 0;  ///< images finished (processed, skipped or failed)
   std::size_t total = 0;
@@ -88,7 +127,7 @@ using ProgressCallback = std::function<void(const Progress&)>;
 /// What run() did.
 struct RunSummary {
   std::vector<ImageRecord> images;  ///< in input order; only images finished when interrupted
-  std::size_t total = 0;            ///< images found
+  std::size_t total = 0;            ///< images found (in this shard; a video's frames each)
   std::size_t ok = 0, noRoi = 0, failed = 0, mismatched = 0, skipped = 0;
   bool interrupted = false;
   double seconds = 0;
@@ -98,8 +137,11 @@ struct RunSummary {
   }
 };
 
-/// Process every image of options.input into options.output, `jobs` at a time, each worker
-/// holding one image at a time (memory is bounded by jobs x one image). Per-image failures are
+/// Process every image of options.inputs (of options.shard) into options.output, `jobs` at a
+/// time, each worker holding one image at a time (memory is bounded by jobs x one image; a video
+/// is read by one worker, frame after frame). Images are read as their EXIF orientation says
+/// (JPEG APP1, PNG eXIf; as cv::imread does without IMREAD_IGNORE_ORIENTATION), keeping 16-bit
+/// and alpha. Per-image failures are
 /// recorded and the run carries on. Temporaries of dead runs in options.output are removed first
 /// (io::removeStaleTemporaries). Images whose NAME.json (status ok or no-roi, made with the
 /// same optionsKey()) and NAME.overlay.png (and NAME.mask.png when asked) are newer than the
@@ -107,8 +149,12 @@ struct RunSummary {
 /// When `cancel` becomes true, no new image is started; images in flight finish (their files
 /// are complete or absent), then the summary of what was done is written and
 /// RunSummary::interrupted is set.
-/// @throws InvalidInputError if the input folder cannot be read or the pipeline options are bad
-///         (ROI spec, board file); Error if the output folder cannot be created or written.
+/// Frames of a video are resumed one by one (each frame's NAME.f000123.json against the video's
+/// modification time).
+/// @throws InvalidInputError if an input folder, file, glob or list file given in
+///         options.inputs cannot be read or matches nothing, options.every or options.shard are
+///         out of range, or the pipeline options are bad (ROI spec, board file); Error if the
+///         output folder cannot be created or written.
 RunSummary run(const BatchOptions& options, const ProgressCallback& progress = {},
                const std::atomic<bool>* cancel = nullptr);
 

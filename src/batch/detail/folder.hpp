@@ -1,5 +1,5 @@
-// roiclip::batch internal: which files of the input folder a run processes, and the output NAME
-// of each.
+// roiclip::batch internal: which files a run processes (BatchOptions::inputs: folders, image and
+// video files, globs, list files), and the output NAME of each.
 #pragma once
 
 #include <filesystem>
@@ -8,13 +8,32 @@
 
 namespace roiclip::batch::detail {
 
-/// Image file extensions a run picks up (lower case, compared case-insensitively).
+/// Image file extensions a run picks up in folders (lower case, compared case-insensitively).
 const std::vector<std::string>& imageExtensions();
+/// Video file extensions (read with cv::VideoCapture): .mp4, .avi, .mkv, .mov, ...
+const std::vector<std::string>& videoExtensions();
+/// Extensions of list files (.txt, .lst, .list).
+const std::vector<std::string>& listExtensions();
 
-/// The image files under `input` (sorted by path), recursively when asked. Hidden files (names
-/// starting with '.', among them io's temporaries) are skipped.
-/// @throws InvalidInputError if `input` is not a readable folder.
-std::vector<std::filesystem::path> findImages(const std::filesystem::path& input, bool recursive);
+/// True when `file`'s extension is one of videoExtensions().
+bool isVideoFile(const std::filesystem::path& file);
+
+/// The image and video files under `folder` (sorted by path), recursively when asked. Hidden
+/// files (names starting with '.', among them io's temporaries) are skipped.
+/// @throws InvalidInputError if `folder` is not a readable folder.
+std::vector<std::filesystem::path> findMediaFiles(const std::filesystem::path& folder,
+                                                  bool recursive);
+
+/// The paths matching `pattern` (POSIX glob(3): '*', '?', '[...]'; a leading '.' only matched
+/// explicitly), sorted by path so the order does not depend on the locale.
+/// @throws InvalidInputError if a folder on the way cannot be read.
+std::vector<std::filesystem::path> expandGlob(const std::string& pattern);
+
+/// The entries of a list file: one path per line (surrounding white space trimmed), relative
+/// ones taken relative to the list file's folder; empty lines and lines starting with '#' are
+/// skipped. The entries are not checked.
+/// @throws InvalidInputError if the file cannot be read.
+std::vector<std::filesystem::path> readListFile(const std::filesystem::path& list);
 
 /// Output NAME for `relative` (an image path relative to the input folder): the path without
 /// its extension, or with the extension kept (`keepExtension`). Only plain names are allowed:
@@ -23,19 +42,22 @@ std::vector<std::filesystem::path> findImages(const std::filesystem::path& input
 /// @throws InvalidInputError for such a path.
 std::string outputName(const std::filesystem::path& relative, bool keepExtension = false);
 
-/// One image of a run.
+/// One input of a run: an image, or a video (all its frames).
 struct Job {
-  std::filesystem::path image;  ///< as listed under the input folder
-  std::string rel;              ///< relative to the input folder, '/' separated
-  std::string name;             ///< output NAME
+  std::filesystem::path image;  ///< the file (may be missing: an entry of a list file)
+  std::string rel;              ///< relative path, '/' separated (ImageRecord::image)
+  std::string name;             ///< output NAME (a video's frames add ".f000123")
+  bool video = false;           ///< read with cv::VideoCapture
 };
 
-/// The images of a run from `input` into `output` (which need not exist yet), in path order:
-/// every
-/// image findImages() lists except the run's own outputs (when `output` lies in `input`), each
-/// with its output NAME, which keeps the extension where two images would share a name.
-/// @throws InvalidInputError as findImages() and outputName().
-std::vector<Job> listJobs(const std::filesystem::path& input, const std::filesystem::path& output,
-                          bool recursive);
+/// The inputs of a run from `inputs` into `output` (which need not exist yet), in the order
+/// given, each folder's files in path order (see BatchOptions::inputs): the run's own outputs
+/// (when `output` lies in a folder input, or overlays and masks in the output folder) are left
+/// out, and a file reached twice is listed once. Each gets its output NAME: the relative path
+/// without extension, with it where two would share a name, then "~2", "~3", ... as needed.
+/// @throws InvalidInputError for an input that is missing, a glob that matches nothing, an
+///         unreadable folder or list file.
+std::vector<Job> listJobs(const std::vector<std::filesystem::path>& inputs,
+                          const std::filesystem::path& output, bool recursive);
 
 }  // namespace roiclip::batch::detail

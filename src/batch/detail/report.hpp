@@ -7,6 +7,9 @@
 
 namespace roiclip::batch::detail {
 
+/// BatchOptions::inputs as one line (separated by spaces).
+std::string inputList(const BatchOptions& options);
+
 /// CSV header of summary.csv.
 extern const char* const kSummaryColumns;
 

@@ -30,9 +30,9 @@ extern const char* const kPixelCoordinates;
 /// The summary row of one processed image (image and name left empty, skipped false).
 ImageRecord recordOf(const ImageResult& result);
 
-/// The summary row back from resultToJson() text: every field recordOf() fills plus `image`;
-/// nothing when the text is not such a file or has another schema_version (a file of an older
-/// roiclip is made again rather than read in a layout it does not have).
+/// The summary row back from resultToJson() text: every field recordOf() fills plus `image` and
+/// `frame`; nothing when the text is not such a file or has another schema_version (a file of an
+/// older roiclip is made again rather than read in a layout it does not have).
 std::optional<ImageRecord> parseRecord(const std::string& jsonText);
 
 /// What a resumed run reuses of an existing NAME.json: its row (skipped, times 0) when the
