@@ -201,14 +201,25 @@ class Runner {
   std::string key_;
 };
 
+// The run's images. "in/" lists "in/x.png", which is not relative to "in/" element by element:
+// the slash is dropped.
+std::vector<Job> listJobs(const BatchOptions& options) {
+  fs::path input = options.input;
+  while (!input.has_filename() && input.has_relative_path()) input = input.parent_path();
+  return detail::listJobs(input, options.output, options.recursive);
+}
+
 }  // namespace
+
+std::size_t checkRun(const BatchOptions& options) {
+  const std::size_t images = listJobs(options).size();
+  const Processor check(options.process);
+  return images;
+}
 
 RunSummary run(const BatchOptions& options, const ProgressCallback& progress,
                const std::atomic<bool>* cancel) {
-  // "in/" lists "in/x.png", which is not relative to "in/" element by element: drop the slash.
-  fs::path input = options.input;
-  while (!input.has_filename() && input.has_relative_path()) input = input.parent_path();
-  std::vector<Job> jobs = detail::listJobs(input, options.output, options.recursive);
+  std::vector<Job> jobs = listJobs(options);
   std::error_code ec;
   fs::create_directories(options.output, ec);
   if (ec || !fs::is_directory(options.output)) {
