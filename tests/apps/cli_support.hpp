@@ -7,21 +7,13 @@
 
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 
 #include <gtest/gtest.h>
 
-namespace roiclip::testing {
+#include "support/run_files.hpp"
 
-/// The whole file as bytes (empty when it cannot be read).
-inline std::string readText(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+namespace roiclip::testing {
 
 struct CliRun {
   int exitCode = -1;

@@ -11,7 +11,6 @@
 #include <csignal>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <string>
 #include <thread>
 #include <vector>
@@ -23,39 +22,21 @@
 
 #include "cli_support.hpp"
 #include "exit_codes.hpp"
+#include "support/run_files.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
 using Json = nlohmann::json;
 using roiclip::testing::CliRun;
+using roiclip::testing::copyScene;
+using roiclip::testing::hiddenFiles;
+using roiclip::testing::lines;
+using roiclip::testing::readJson;
 using roiclip::testing::readText;
 
 const fs::path kImages = ROICLIP_IMAGES;
 const fs::path kData = ROICLIP_TEST_DATA;
-
-Json readJson(const fs::path& file) { return Json::parse(readText(file)); }
-
-void copyScene(const std::string& scene, const fs::path& to) {
-  fs::create_directories(to.parent_path());
-  fs::copy_file(kImages / (scene + ".png"), to, fs::copy_options::overwrite_existing);
-}
-
-std::vector<std::string> lines(const std::string& text) {
-  std::vector<std::string> out;
-  std::istringstream in(text);
-  for (std::string l; std::getline(in, l);) out.push_back(l);
-  return out;
-}
-
-// Files whose name starts with '.' (our temporary files) anywhere under `dir`.
-int hiddenFiles(const fs::path& dir) {
-  int n = 0;
-  for (const auto& e : fs::recursive_directory_iterator(dir)) {
-    if (e.path().filename().string()[0] == '.') ++n;
-  }
-  return n;
-}
 
 std::string quoted(const fs::path& p) { return "'" + p.string() + "'"; }
 
@@ -287,28 +268,29 @@ TEST_F(RunCli, HelpMatchesBehaviour) {
   EXPECT_EQ(r.exitCode, 0);
   const std::string& help = r.out;
   const roiclip::batch::RunOptions defaults;
-  for (const std::string& needle :
-       {std::string("tags:22@top-left,24@top-right,25@bottom-right,23@bottom-left"),
-        std::string("--roi TEXT=[hull] ..."),
-        std::string("repeat"),
-        std::string("board               every ROI of the board file"),
-        std::string("cut out of the\nregion (--keep-tags keeps them in)"),
-        std::string("--keep-tags"),
-        std::string("--tag-margin FLOAT=0"),
-        std::string("--family TEXT=" + defaults.detector.family),
-        std::string("--decimate FLOAT=0 "),
-        std::string("0 = automatic"),
-        std::string("--max-hamming INT=" + std::to_string(defaults.detector.maxHamming)),
-        std::string("--min-margin FLOAT=0"),
-        std::string("--max-pixels INT=" + std::to_string(defaults.maxPixels)),
-        std::string("--method TEXT=otsu"),
-        std::string("--fill-rule TEXT=evenodd"),
-        std::string("--config"),
-        std::string("board:inspection"),
-        std::string("--jobs"),
-        std::string("--recursive"),
-        std::string("--force"),
-        roiclip::app::exitCodesHelp(roiclip::app::ExitCodesOf::Run)}) {
+  const std::vector<std::string> needles = {
+      "tags:22@top-left,24@top-right,25@bottom-right,23@bottom-left",
+      "--roi TEXT=[hull] ...",
+      "repeat",
+      "board               every ROI of the board file",
+      "cut out of the\nregion (--keep-tags keeps them in)",
+      "--keep-tags",
+      "--tag-margin FLOAT=0",
+      "--family TEXT=" + defaults.detector.family,
+      "--decimate FLOAT=0 ",
+      "0 = automatic",
+      "--max-hamming INT=" + std::to_string(defaults.detector.maxHamming),
+      "--min-margin FLOAT=0",
+      "--max-pixels INT=" + std::to_string(defaults.maxPixels),
+      "--method TEXT=otsu",
+      "--fill-rule TEXT=evenodd",
+      "--config",
+      "board:inspection",
+      "--jobs",
+      "--recursive",
+      "--force",
+      roiclip::app::exitCodesHelp(roiclip::app::ExitCodesOf::Run)};
+  for (const std::string& needle : needles) {
     EXPECT_NE(help.find(needle), std::string::npos) << needle;
   }
 }

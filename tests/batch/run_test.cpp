@@ -5,7 +5,6 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -19,6 +18,7 @@
 
 #include "detail/folder.hpp"
 #include "detail/report.hpp"
+#include "support/run_files.hpp"
 #include "temp_dir.hpp"
 
 namespace fs = std::filesystem;
@@ -32,35 +32,11 @@ const fs::path kData = ROICLIP_TEST_DATA;
 
 using roiclip::testing::TempDir;
 
-std::string readText(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-Json readJson(const fs::path& file) { return Json::parse(readText(file)); }
-
-void copyScene(const std::string& scene, const fs::path& to) {
-  fs::create_directories(to.parent_path());
-  fs::copy_file(kImages / (scene + ".png"), to, fs::copy_options::overwrite_existing);
-}
-
-std::vector<std::string> lines(const std::string& text) {
-  std::vector<std::string> out;
-  std::istringstream in(text);
-  for (std::string l; std::getline(in, l);) out.push_back(l);
-  return out;
-}
-
-// Files whose name starts with '.' (our temporary files) anywhere under `dir`.
-int hiddenFiles(const fs::path& dir) {
-  int n = 0;
-  for (const auto& e : fs::recursive_directory_iterator(dir)) {
-    if (e.path().filename().string()[0] == '.') ++n;
-  }
-  return n;
-}
+using roiclip::testing::copyScene;
+using roiclip::testing::hiddenFiles;
+using roiclip::testing::lines;
+using roiclip::testing::readJson;
+using roiclip::testing::readText;
 
 rb::BatchOptions optionsFor(const fs::path& input, const fs::path& output) {
   rb::BatchOptions o;
