@@ -161,6 +161,9 @@ RunCommand::RunCommand(CLI::App& app) {
   cmd_->add_option("-o,--output", options_.output, "output folder")
       ->default_str(options_.output.string());
 
+  // CLI11 reads config files on the main app only, before any option's callback: `run --config`
+  // hands its file to the main app's config option (hidden from the main help) as soon as it is
+  // parsed, and ConfigJson routes the file's items to `run`.
   config_ = app.set_config("--config", "", "JSON file of `roiclip run` options")->group("");
   app.config_formatter(std::make_shared<ConfigJson>(*cmd_));
   cmd_->add_option_function<std::string>(
