@@ -1,9 +1,10 @@
 // roiclip command line: set up the subcommands, dispatch, and turn exceptions into exit codes
-// (exit_codes.hpp). The commands live in geometry_commands.* and run_command.hpp.
+// (exit_codes.hpp). The commands live in geometry_commands.* and run_command.*; `roiclip help
+// [COMMAND]` prints the same help as `roiclip [COMMAND] --help`.
 #include <exception>
 #include <iostream>
+#include <optional>
 #include <string>
-#include <vector>
 
 #include <CLI/CLI.hpp>
 
@@ -41,9 +42,43 @@ int reportCurrentException() {
   return kExitInternal;
 }
 
+// `roiclip help [COMMAND]`: the help `roiclip [COMMAND] --help` prints.
+class HelpCommand {
+ public:
+  explicit HelpCommand(CLI::App& app) : app_(app) {
+    cmd_ = app.add_subcommand("help", "print this help, or a command's (roiclip help run)");
+    cmd_->add_option("command", topic_, "the command to explain");
+  }
+  [[nodiscard]] CLI::App* subcommand() const { return cmd_; }
+
+  [[nodiscard]] int execute() const {
+    if (topic_.empty()) {
+      std::cout << app_.get_formatter()->make_help(&app_, app_.get_name(),
+                                                   CLI::AppFormatMode::Normal);
+      return kExitOk;
+    }
+    const CLI::App* command = nullptr;
+    for (const CLI::App* sub : app_.get_subcommands({})) {
+      if (sub->check_name(topic_) && sub != cmd_) command = sub;
+    }
+    if (command == nullptr) {
+      std::cerr << "roiclip help: no command '" << topic_ << "' (roiclip --help lists them)\n";
+      return kExitUsage;
+    }
+    std::cout << command->help(app_.get_name());
+    return kExitOk;
+  }
+
+ private:
+  CLI::App& app_;
+  CLI::App* cmd_ = nullptr;
+  std::string topic_;
+};
+
 int runMain(int argc, char** argv) {
   CLI::App app{"roiclip: exact clipping of self-intersecting polygons"};
   app.footer(exitCodesHelp(ExitCodesOf::Geometry));
+  app.set_version_flag("--version", std::string("roiclip ") + ROICLIP_VERSION);
   app.require_subcommand(1);
 #ifdef ROICLIP_HAVE_BATCH
   RunCommand runCommand(app);
@@ -53,22 +88,18 @@ int runMain(int argc, char** argv) {
   run->allow_extras();
 #endif
   GeometryCommands geometry(app);
+  const HelpCommand help(app);
 
   try {
-#ifdef ROICLIP_HAVE_BATCH
-    // Options from --config go in front of the command line's own, so the command line wins.
-    const std::vector<std::string> args = RunCommand::withConfig(argc, argv);
-    std::vector<const char*> argvWithConfig;
-    argvWithConfig.reserve(args.size());
-    for (const auto& a : args) argvWithConfig.push_back(a.c_str());
-    app.parse(static_cast<int>(argvWithConfig.size()), argvWithConfig.data());
-#else
     app.parse(argc, argv);
-#endif
   } catch (const CLI::ParseError& e) {
+#ifdef ROICLIP_HAVE_BATCH
+    if (const std::optional<int> code = runCommand.badInputExit(e)) return *code;
+#endif
     return app.exit(e) == 0 ? kExitOk : kExitUsage;
   }
 
+  if (help.subcommand()->parsed()) return help.execute();
   if (run->parsed()) {
 #ifdef ROICLIP_HAVE_BATCH
     return runCommand.execute();

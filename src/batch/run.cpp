@@ -384,17 +384,30 @@ class Runner {
   std::string key_;
 };
 
-}  // namespace
-
-RunSummary run(const BatchOptions& options, const ProgressCallback& progress,
-               const std::atomic<bool>* cancel) {
+// The run's images. "in/" lists "in/x.png", which is not relative to "in/" element by element:
+// the slash is dropped.
+// The jobs of this run's shard. Names are given over all inputs, so every shard names an input
+// alike.
+std::vector<Job> listJobs(const BatchOptions& options) {
   if (options.every < 1) {
     throw InvalidInputError("every " + std::to_string(options.every) +
                             ": need a frame step of at least 1");
   }
-  // Names are given over all inputs, so every shard names an input alike.
-  std::vector<Job> jobs = detail::selectShard(
-      detail::listJobs(options.inputs, options.output, options.recursive), options.shard);
+  return detail::selectShard(detail::listJobs(options.inputs, options.output, options.recursive),
+                             options.shard);
+}
+
+}  // namespace
+
+std::size_t checkRun(const BatchOptions& options) {
+  const std::size_t images = listJobs(options).size();
+  const Processor check(options.process);
+  return images;
+}
+
+RunSummary run(const BatchOptions& options, const ProgressCallback& progress,
+               const std::atomic<bool>* cancel) {
+  std::vector<Job> jobs = listJobs(options);
   std::error_code ec;
   fs::create_directories(options.output, ec);
   if (ec || !fs::is_directory(options.output)) {

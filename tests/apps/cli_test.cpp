@@ -1,66 +1,27 @@
 // Runs the built `roiclip` command line (ROICLIP_CLI): simplify, clip and clip-lines on the files
 // in tests/data/io; checks their output, their stderr and their exit codes.
-#include <sys/wait.h>
-#include <unistd.h>
-
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <string>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "cli_support.hpp"
 #include "exit_codes.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
 using nlohmann::json;
+using roiclip::testing::CliRun;
 
 const std::string kData = std::string(ROICLIP_TEST_DATA) + "/io/";
 
-struct CliRun {
-  int exitCode = -1;
-  std::string out;
-  std::string err;
-};
+using roiclip::testing::readText;
 
-std::string slurp(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-class Cli : public ::testing::Test {
+class Cli : public roiclip::testing::CliTest {
  protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    // The pid keeps concurrent runs of the suite (several builds on one machine) apart.
-    dir_ = fs::temp_directory_path() /
-           (std::string("roiclip_cli_test_") + info->name() + "_" + std::to_string(::getpid()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  CliRun run(const std::string& args) const {
-    const fs::path out = dir_ / "stdout.txt";
-    const fs::path err = dir_ / "stderr.txt";
-    const std::string command = std::string("'") + ROICLIP_CLI + "' " + args + " >'" +
-                                out.string() + "' 2>'" + err.string() + "'";
-    const int status = std::system(command.c_str());
-    CliRun r;
-    r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    r.out = slurp(out);
-    r.err = slurp(err);
-    fs::remove(out);
-    fs::remove(err);
-    return r;
-  }
-
   // Properties of the single Feature of a GeoJSON FeatureCollection written by the CLI.
   static json properties(const std::string& text) {
     const json root = json::parse(text);
@@ -79,8 +40,6 @@ class Cli : public ::testing::Test {
     EXPECT_NE(r.err.find(file), std::string::npos) << r.err;
     EXPECT_NE(r.err.find(problem), std::string::npos) << r.err;
   }
-
-  fs::path dir_;
 };
 
 TEST_F(Cli, HelpDocumentsExitCodes) {
@@ -135,8 +94,8 @@ TEST_F(Cli, SimplifyToFile) {
       run("simplify --dissolve '" + kData + "frame.geojson' -o '" + out.string() + "'");
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_TRUE(r.out.empty());
-  EXPECT_DOUBLE_EQ(properties(slurp(out)).at("area").get<double>(), 164.0);
-  EXPECT_EQ(properties(slurp(out)).at("rings").get<int>(), 3);
+  EXPECT_DOUBLE_EQ(properties(readText(out)).at("area").get<double>(), 164.0);
+  EXPECT_EQ(properties(readText(out)).at("rings").get<int>(), 3);
 }
 
 TEST_F(Cli, ClipOperations) {
@@ -224,7 +183,7 @@ TEST_F(Cli, BadInputWritesNoOutputFile) {
   const CliRun again =
       run("clip '" + kData + "square.geojson' '" + kData + "bad_syntax.json' -o " + out.string());
   EXPECT_EQ(again.exitCode, 2);
-  EXPECT_EQ(slurp(out), "previous");
+  EXPECT_EQ(readText(out), "previous");
   std::size_t entries = 0;
   for ([[maybe_unused]] const auto& e : fs::directory_iterator(dir_)) ++entries;
   EXPECT_EQ(entries, 1u);
@@ -323,7 +282,7 @@ TEST_F(Cli, ClipLinesFillRuleAndOutputFile) {
       run("clip-lines --fill-rule nonzero " + lines + " " + twice + " -o '" + out.string() + "'");
   ASSERT_EQ(nonZero.exitCode, 0) << nonZero.err;
   EXPECT_TRUE(nonZero.out.empty());
-  EXPECT_DOUBLE_EQ(properties(slurp(out)).at("length").get<double>(), 26.0);
+  EXPECT_DOUBLE_EQ(properties(readText(out)).at("length").get<double>(), 26.0);
 }
 
 TEST_F(Cli, ClipLinesBadInput) {
@@ -361,7 +320,7 @@ TEST_F(Cli, ClipLinesBadInputWritesNoOutputFile) {
   const CliRun r = run("clip-lines '" + kData + "lines_nan.json' '" + kData +
                        "square.geojson' -o '" + out.string() + "'");
   EXPECT_EQ(r.exitCode, 2);
-  EXPECT_EQ(slurp(out), "previous");
+  EXPECT_EQ(readText(out), "previous");
   std::size_t entries = 0;
   for ([[maybe_unused]] const auto& e : fs::directory_iterator(dir_)) ++entries;
   EXPECT_EQ(entries, 1u);
@@ -455,7 +414,7 @@ TEST_F(Cli, WktInAndOut) {
   const CliRun clipped = run("clip --format wkt '" + kData + "frame.wkt' '" + kData +
                              "roi.geojson' -o '" + out.string() + "'");
   ASSERT_EQ(clipped.exitCode, 0) << clipped.err;
-  EXPECT_EQ(slurp(out).rfind("MULTIPOLYGON(", 0), 0u) << slurp(out);
+  EXPECT_EQ(readText(out).rfind("MULTIPOLYGON(", 0), 0u) << readText(out);
   const CliRun back = run("simplify '" + out.string() + "'");
   // frame.wkt's first square without its hole, within the ROI's x in [2, 8]: 60 - 36.
   EXPECT_DOUBLE_EQ(area(back), 24.0);

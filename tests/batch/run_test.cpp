@@ -1,19 +1,10 @@
-// roiclip::batch::run() and `roiclip run`: the bundled images end to end, resumability,
-// interruption, recursion, and every failure path (corrupt file, empty folder, no tags, missing
-// id, unwritable output folder) with the documented exit codes.
-#include <fcntl.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
-#include <csignal>
-#include <thread>
-
+// roiclip::batch::run(): the bundled images end to end, resumability, interruption, recursion,
+// and every failure path (corrupt file, empty folder, no tags, missing id, unwritable output
+// folder); checkRun(). `roiclip run` itself is tested in tests/apps.
 #include <atomic>
 #include <chrono>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -27,6 +18,7 @@
 
 #include "detail/folder.hpp"
 #include "detail/report.hpp"
+#include "support/run_files.hpp"
 #include "temp_dir.hpp"
 
 namespace fs = std::filesystem;
@@ -40,35 +32,11 @@ const fs::path kData = ROICLIP_TEST_DATA;
 
 using roiclip::testing::TempDir;
 
-std::string readText(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-Json readJson(const fs::path& file) { return Json::parse(readText(file)); }
-
-void copyScene(const std::string& scene, const fs::path& to) {
-  fs::create_directories(to.parent_path());
-  fs::copy_file(kImages / (scene + ".png"), to, fs::copy_options::overwrite_existing);
-}
-
-std::vector<std::string> lines(const std::string& text) {
-  std::vector<std::string> out;
-  std::istringstream in(text);
-  for (std::string l; std::getline(in, l);) out.push_back(l);
-  return out;
-}
-
-// Files whose name starts with '.' (our temporary files) anywhere under `dir`.
-int hiddenFiles(const fs::path& dir) {
-  int n = 0;
-  for (const auto& e : fs::recursive_directory_iterator(dir)) {
-    if (e.path().filename().string()[0] == '.') ++n;
-  }
-  return n;
-}
+using roiclip::testing::copyScene;
+using roiclip::testing::hiddenFiles;
+using roiclip::testing::lines;
+using roiclip::testing::readJson;
+using roiclip::testing::readText;
 
 rb::BatchOptions optionsFor(const fs::path& input, const fs::path& output) {
   rb::BatchOptions o;
@@ -358,135 +326,27 @@ TEST(BatchRun, OutputNamesCannotEscape) {
   }
 }
 
-TEST(BatchRun, ConfigToArguments) {
-  const auto args = rb::configToArguments(
-      R"({"roi": "tags:0,1,2,3", "jobs": 2, "force": true, "masks": false, "approx": 1.5})");
-  const std::vector<std::string> expected = {"--approx", "1.5",   "--force",     "--jobs",
-                                             "2",        "--roi", "tags:0,1,2,3"};
-  EXPECT_EQ(args, expected);
-  EXPECT_THROW(rb::configToArguments("[1, 2]"), roiclip::InvalidInputError);
-  EXPECT_THROW(rb::configToArguments("{oops"), roiclip::InvalidInputError);
-  EXPECT_THROW(rb::configToArguments(R"({"roi": {"a": 1}})"), roiclip::InvalidInputError);
-}
-
-#ifdef ROICLIP_CLI
-// Exit code of `roiclip ARGS` (stdout/stderr to files in `dir`).
-int cli(const std::string& args, const fs::path& dir) {
-  const std::string cmd = std::string("'") + ROICLIP_CLI + "' " + args + " >'" +
-                          (dir / "stdout.txt").string() + "' 2>'" + (dir / "stderr.txt").string() +
-                          "'";
-  const int status = std::system(cmd.c_str());
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
-
-TEST(BatchCli, ExitCodes) {
-  const TempDir tmp("cli");
-  const fs::path t = tmp.path();
-  copyScene("scene_07", t / "in" / "a.png");
-  const std::string in = "'" + (t / "in").string() + "'";
-  const std::string out = " -o '" + (t / "out").string() + "'";
-  EXPECT_EQ(cli("run " + in + out + " --jobs 1", t), 0) << readText(t / "stderr.txt");
-  EXPECT_NE(readText(t / "stderr.txt").find("[1/1] a.png ok"), std::string::npos)
-      << "plain progress lines when not a terminal";
-  EXPECT_EQ(cli("run " + in + out, t), 0);
-  EXPECT_NE(readText(t / "stderr.txt").find("skipped (up to date)"), std::string::npos);
-
-  // Other options: the outputs are not up to date for them, so the image is processed again.
-  EXPECT_EQ(cli("run " + in + out + " --roi tags:0,1,2,9", t), 5);
-  EXPECT_EQ(cli("run " + in + out + " --roi tags:0,1,2,9 --force", t), 5);
-  EXPECT_EQ(cli("run " + in + out + " --roi nonsense", t), 2);
-  EXPECT_EQ(cli("run " + in + out + " --method sobel", t), 2);
-  EXPECT_EQ(cli("run " + in + out + " --roi board:inspection", t), 2);  // no --board
-  EXPECT_EQ(cli("run '" + (t / "nowhere").string() + "'" + out, t), 2);
-  fs::create_directories(t / "empty");
-  EXPECT_EQ(cli("run '" + (t / "empty").string() + "'" + out, t), 2);
-  std::ofstream(t / "file") << "x";
-  EXPECT_EQ(cli("run " + in + " -o '" + (t / "file" / "out").string() + "'", t), 3);
-
-  fs::copy_file(kData / "batch" / "corrupt.png", t / "in" / "b.png");
-  EXPECT_EQ(cli("run " + in + out, t), 5);
-  EXPECT_NE(readText(t / "stderr.txt").find("b.png: failed"), std::string::npos);
-  fs::remove(t / "in" / "b.png");
-
-  // --max-pixels: refused from the header, reported as too-large; 0 lifts the limit. The limit
-  // guards decoding and changes no result, so up-to-date images are still skipped.
-  EXPECT_EQ(cli("run " + in + out + " --max-pixels 1000", t), 0);
-  EXPECT_EQ(cli("run " + in + out + " --max-pixels 1000 --force", t), 5);
-  EXPECT_NE(readText(t / "out" / "summary.csv").find("a.png,failed,too-large,"), std::string::npos);
-  EXPECT_EQ(cli("run " + in + out + " --max-pixels 0", t), 0);
-  EXPECT_EQ(cli("run " + in + out + " --max-pixels -1", t), 1);
-
-  // --config: its options apply, the command line wins.
-  std::ofstream(t / "run.json") << R"({"roi": "tags:0,1,2,9", "force": true, "jobs": 1})";
-  const std::string config = " --config '" + (t / "run.json").string() + "'";
-  EXPECT_EQ(cli("run " + in + out + config, t), 5);
-  EXPECT_EQ(cli("run " + in + out + config + " --roi hull", t), 0);
-  std::ofstream(t / "bad.json") << "{not json";
-  EXPECT_EQ(cli("run " + in + out + " --config '" + (t / "bad.json").string() + "'", t), 2);
-
-  EXPECT_EQ(cli("run --help", t), 0);
-  EXPECT_EQ(cli("--help", t), 0);
-  EXPECT_NE(readText(t / "stdout.txt").find("run"), std::string::npos);
-  EXPECT_EQ(cli("run --help", t), 0);
-  const std::string help = readText(t / "stdout.txt");
-  for (const char* needle : {"Exit codes", "--roi", "board:inspection", "--jobs", "--force",
-                             "--recursive", "--config", "--max-pixels", "130"}) {
-    EXPECT_NE(help.find(needle), std::string::npos) << needle;
+// checkRun() refuses what run() would, and counts the images, without creating anything.
+TEST(BatchRun, CheckRunCreatesNothing) {
+  const TempDir tmp("check");
+  copyScene("scene_07", tmp.path() / "in" / "a.png");
+  copyScene("scene_08", tmp.path() / "in" / "b.png");
+  rb::BatchOptions options = optionsFor(tmp.path() / "in", tmp.path() / "out");
+  EXPECT_EQ(rb::checkRun(options), 2u);
+  fs::create_directories(tmp.path() / "empty");
+  EXPECT_EQ(rb::checkRun(optionsFor(tmp.path() / "empty", tmp.path() / "out")), 0u);
+  EXPECT_THROW(rb::checkRun(optionsFor(tmp.path() / "missing", tmp.path() / "out")),
+               roiclip::InvalidInputError);
+  for (const char* bad : {"tags:0,0,0", "hull:0,5000", "board:inspection", "nonsense"}) {
+    options.process.rois = {bad};
+    EXPECT_THROW(rb::checkRun(options), roiclip::InvalidInputError) << bad;
   }
+  options.process.rois = {"hull", "hull"};
+  EXPECT_THROW(rb::checkRun(options), roiclip::InvalidInputError);
+  options.process.rois = {"hull"};
+  options.process.detector.quadDecimate = 0.5f;
+  EXPECT_THROW(rb::checkRun(options), roiclip::InvalidInputError);
+  EXPECT_FALSE(fs::exists(tmp.path() / "out"));
 }
-
-// Ctrl-C: SIGINT after the first image. The run stops taking images, writes the summary of
-// what it finished, exits 130 and leaves no partial or temporary files; a second run finishes.
-TEST(BatchCli, CtrlCThenResume) {
-  const TempDir tmp("sigint");
-  const fs::path t = tmp.path();
-  for (int i = 0; i < 6; ++i)
-    copyScene("scene_0" + std::to_string(i + 1), t / "in" / ("s" + std::to_string(i) + ".png"));
-  const std::string errFile = (t / "stderr.txt").string();
-  const pid_t pid = ::fork();
-  ASSERT_GE(pid, 0);
-  if (pid == 0) {
-    const int fd = ::open(errFile.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    ::dup2(fd, STDERR_FILENO);
-    const std::string in = (t / "in").string();
-    const std::string out = (t / "out").string();
-    ::execl(ROICLIP_CLI, ROICLIP_CLI, "run", in.c_str(), "-o", out.c_str(), "--jobs", "1",
-            static_cast<char*>(nullptr));
-    ::_exit(127);
-  }
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
-  while (readText(errFile).find("[1/6]") == std::string::npos &&
-         std::chrono::steady_clock::now() < deadline) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(5));
-  }
-  ::kill(pid, SIGINT);
-  int status = 0;
-  ::waitpid(pid, &status, 0);
-  ASSERT_TRUE(WIFEXITED(status));
-  EXPECT_EQ(WEXITSTATUS(status), 130) << readText(errFile);
-  const fs::path out = t / "out";
-  EXPECT_EQ(hiddenFiles(out), 0);
-  const Json summary = readJson(out / "summary.json");
-  EXPECT_EQ(summary["interrupted"], true);
-  const std::size_t finished = summary["images"].size();
-  EXPECT_GE(finished, 1u);
-  EXPECT_LT(finished, 6u);
-  int jsons = 0;
-  for (const auto& e : fs::directory_iterator(out)) {
-    const std::string f = e.path().filename().string();
-    if (f.size() > 5 && f.compare(f.size() - 5, 5, ".json") == 0 && f != "summary.json") {
-      EXPECT_EQ(readJson(e.path())["status"], "ok") << f;  // every file there is complete
-      EXPECT_TRUE(fs::exists(out / (e.path().stem().string() + ".overlay.png"))) << f;
-      ++jsons;
-    }
-  }
-  EXPECT_EQ(static_cast<std::size_t>(jsons), finished);
-
-  EXPECT_EQ(cli("run '" + (t / "in").string() + "' -o '" + out.string() + "'", t), 0);
-  const Json resumed = readJson(out / "summary.json");
-  EXPECT_EQ(resumed["ok"], 6);
-  EXPECT_EQ(resumed["skipped"].get<std::size_t>(), finished);
-}
-#endif
 
 }  // namespace

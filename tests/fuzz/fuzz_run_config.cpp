@@ -1,36 +1,47 @@
-// libFuzzer target: the `roiclip run --config FILE` reader (roiclip::batch::configToArguments)
-// on the bytes as text, then the option values through the parsers the app hands them to
-// (parseContourMethod, parsePolarity, parseFillRule, parseRoiSpec), as `roiclip run` does.
-// Only roiclip::Error may escape.
+// libFuzzer target: the `roiclip run --config FILE` reader (roiclip::app::ConfigJson) on the
+// bytes, then CLI11's config path with it as `roiclip` sets it up (RunCommand: the items go to
+// `run`'s options, through their checks and the library's parsers: parseContourMethod,
+// parsePolarity, parseFillRule, parseRoiSpec). A refused file is a CLI::ParseError (the app
+// turns it into exit 1 or 2); any other exception is a bug.
 #include <cstddef>
 #include <cstdint>
+#include <sstream>
 #include <string>
-#include <vector>
+#include <typeinfo>
 
-#include <roiclip/apriltag/roi.hpp>
-#include <roiclip/batch/process.hpp>
-#include <roiclip/batch/run.hpp>
+#include <CLI/CLI.hpp>
 
+#include "config_json.hpp"
 #include "fuzz_support.hpp"
+#include "run_command.hpp"
+
+namespace {
+
+template <class Body>
+void expectParseErrorsOnly(const char* what, Body&& body) {
+  try {
+    body();
+  } catch (const CLI::ParseError&) {
+  } catch (const std::exception& e) {
+    roiclip::fuzz::fail(std::string(what) + ": exception " + typeid(e).name() + ": " + e.what());
+  } catch (...) {
+    roiclip::fuzz::fail(std::string(what) + ": exception not derived from std::exception");
+  }
+}
+
+}  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  using namespace roiclip;
   const std::string text(reinterpret_cast<const char*>(data), size);
-  std::vector<std::string> args;
-  fuzz::expectDocumentedErrors("configToArguments",
-                               [&] { args = batch::configToArguments(text, "<fuzz>"); });
-  // Every option name with the argument after it (a flag's neighbour is another option name:
-  // the parsers must reject that too with a documented error).
-  for (std::size_t i = 0; i + 1 < args.size(); ++i) {
-    const std::string& key = args[i];
-    const std::string& value = args[i + 1];
-    fuzz::expectDocumentedErrors(key.c_str(), [&] {
-      batch::ContourOptions contours;
-      if (key == "--method") batch::parseContourMethod(value, contours);
-      if (key == "--polarity") batch::parsePolarity(value);
-      if (key == "--fill-rule" || key == "--roi-fill-rule") parseFillRule(value.c_str());
-      if (key == "--roi") apriltag::parseRoiSpec(value);
-    });
-  }
+  CLI::App app{"roiclip"};
+  const roiclip::app::RunCommand run(app);
+  expectParseErrorsOnly("ConfigJson::from_config", [&] {
+    std::istringstream in(text);
+    (void)roiclip::app::ConfigJson(*run.subcommand()).from_config(in);
+  });
+  expectParseErrorsOnly("parse_from_stream", [&] {
+    std::istringstream in(text);
+    app.parse_from_stream(in);
+  });
   return 0;
 }

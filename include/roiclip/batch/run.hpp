@@ -158,12 +158,11 @@ struct RunSummary {
 RunSummary run(const BatchOptions& options, const ProgressCallback& progress = {},
                const std::atomic<bool>* cancel = nullptr);
 
-/// Turn a JSON config object into command-line arguments: {"jobs": 2, "force": true,
-/// "roi": "hull"} -> ["--jobs", "2", "--force", "--roi", "hull"]. Booleans become a flag when
-/// true and are left out when false; arrays repeat the option. Keys are long option names
-/// without the dashes. The app puts these before its own arguments so the command line wins.
-/// @throws InvalidInputError naming `source` for malformed JSON or a non-object.
-std::vector<std::string> configToArguments(const std::string& jsonText,
-                                           const std::string& source = "config");
+/// What run() refuses before it creates anything, checked without touching the output folder:
+/// the input folder is listed and the pipeline options make a Processor (ROI specs, board file,
+/// detector options). Call it first so that bad options leave no output folder behind.
+/// @return the number of images run() would process (0: none found).
+/// @throws InvalidInputError as run() does for those.
+std::size_t checkRun(const BatchOptions& options);
 
 }  // namespace roiclip::batch
