@@ -210,7 +210,9 @@ Caption captionOf(const ImageResult& result, const Scale& s) {
   if (result.status != Status::Ok && !result.reason.empty()) c.phrase(result.reason, kBadText);
   c.newLine();
   // The legend: only what is drawn.
-  if (!result.rois.empty() || !result.roi.empty()) c.phrase("ROI", kRegionColour);
+  if (!result.rois.empty() || !result.roi.empty()) {
+    c.phrase(result.rois.size() > 1 ? "ROIs" : "ROI", kRegionColour);
+  }
   if (!result.excludedTags.empty()) c.phrase("excluded tags (hatched)", kExcludedColour);
   if (!result.tags.empty()) c.phrase("tag ids", kTagColour);
   if (!result.contours.empty()) c.phrase("clipped contours (filled)", kPalette[0]);

@@ -105,7 +105,8 @@ th button{font:inherit;color:inherit;background:none;border:0;cursor:pointer;pad
 th button::after{content:" \2195";opacity:.6}
 th[aria-sort=ascending] button::after{content:" \25B2"}
 th[aria-sort=descending] button::after{content:" \25BC"}
-td.text,th.text{text-align:left}td.reason{white-space:normal;min-width:12em}
+td.text,th.text{text-align:left}td.reason{white-space:normal;min-width:12em;overflow-wrap:anywhere}
+.scroll{overflow-x:auto}
 tr.bad td{background:#fdeaea}.sub{font-size:85%;color:#555}.status-bad{color:#b00;font-weight:bold}.status-ok{color:#070}
 .grid{display:grid;grid-template-columns:repeat(auto-fill,minmax(260px,1fr));gap:12px}
 figure{margin:0;padding:6px;background:#fff;border:1px solid #ddd;border-radius:4px}
@@ -113,7 +114,7 @@ figure.bad{border-color:#e88}
 figure img{width:100%;height:auto;display:block}
 figcaption{font-size:85%;margin-top:4px;overflow-wrap:anywhere}
 .noimage{aspect-ratio:4/3;display:flex;align-items:center;justify-content:center;
-background:#eee;color:#b00;text-align:center;padding:1em}
+background:#eee;color:#b00;text-align:center;padding:1em;overflow:hidden;overflow-wrap:anywhere}
 )";
 
 // Sort the table by a th's data-key: numbers read from each row's data-* attribute; rows without
@@ -139,6 +140,13 @@ const char* const kScript = R"(
       rows.forEach(function (r) { body.appendChild(r); });
     });
   });
+  // report.html#sort=iou opens sorted by IoU, ascending; #sort=-iou descending.
+  var m = /^#sort=(-?)([a-z-]+)$/.exec(location.hash);
+  var th = m && document.querySelector('#summary th[data-key="' + m[2] + '"]');
+  if (th) {
+    th.querySelector('button').click();
+    if (m[1]) th.querySelector('button').click();
+  }
 })();
 )";
 
@@ -247,7 +255,7 @@ std::string reportHtml(const RunSummary& summary, const ReportPage& page) {
   writeCounts(os, summary);
 
   const std::vector<std::size_t> order = reportOrder(summary);
-  os << "<table id=\"summary\"><thead><tr><th class=\"text\">image</th>"
+  os << "<div class=\"scroll\"><table id=\"summary\"><thead><tr><th class=\"text\">image</th>"
      << "<th class=\"text\" data-key=\"status\"><button type=\"button\">status</button></th>"
      << "<th class=\"text\">reason</th><th>tags</th>"
      << "<th data-key=\"roi-area\"><button type=\"button\">ROI px&sup2;</button></th>"
@@ -257,7 +265,7 @@ std::string reportHtml(const RunSummary& summary, const ReportPage& page) {
      << "<th data-key=\"time\"><button type=\"button\">s</button></th>"
      << "<th class=\"text\">files</th></tr></thead>\n<tbody>\n";
   for (std::size_t k = 0; k < order.size(); ++k) writeRow(os, summary.images[order[k]], k);
-  os << "</tbody></table>\n<h2>Overlays</h2>\n<div class=\"grid\" id=\"overlays\">\n";
+  os << "</tbody></table></div>\n<h2>Overlays</h2>\n<div class=\"grid\" id=\"overlays\">\n";
   for (std::size_t k = 0; k < order.size(); ++k) writeFigure(os, summary.images[order[k]], k);
   os << "</div>\n<script>" << kScript << "</script>\n</body></html>\n";
   return os.str();

@@ -7,7 +7,7 @@
 //   NAME.mask.png      renderMask() (only with writeMasks)
 //   summary.csv        one row per image (ImageRecord's fields)
 //   summary.json       the same rows plus run totals
-//   report.html        every overlay with its figures
+//   report.html        counts, a sortable table of every image (failures first), the overlays
 // NAME is the image's path relative to the input folder without its extension (with it when
 // two images would otherwise share a name), so sub-folders are mirrored with `recursive`.
 #pragma once

@@ -22,7 +22,8 @@ struct ReportPage {
 /// grid of the overlays, each linked to its full-size NAME.overlay.png and its NAME.json. Every
 /// link is relative to the folder report.html is written into (ImageRecord::name); no external
 /// assets, so the page works offline. Images the pipeline did not clip (no-roi, failed) show no
-/// IoU, contours or areas.
+/// IoU, contours or areas. report.html#sort=KEY opens sorted by KEY (status, roi-area, area,
+/// iou, time) ascending, #sort=-KEY descending.
 std::string reportHtml(const RunSummary& summary, const ReportPage& page);
 
 /// The order report.html lists the images in: indices into summary.images, failed first, then
