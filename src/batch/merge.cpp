@@ -214,22 +214,7 @@ RunSummary merge(const MergeOptions& options) {
   }
   for (Entry& e : entries) {
     copyImageFiles(e, options.output);
-    switch (e.record.status) {
-      case Status::Ok:
-        ++summary.ok;
-        break;
-      case Status::NoRoi:
-        ++summary.noRoi;
-        break;
-      case Status::Failed:
-        ++summary.failed;
-        break;
-      case Status::MaskMismatch:
-        ++summary.mismatched;
-        break;
-    }
-    if (e.record.skipped) ++summary.skipped;
-    summary.images.push_back(std::move(e.record));
+    summary.add(std::move(e.record));
   }
 
   io::writeFileAtomically(options.output / "summary.csv", detail::summaryCsv(summary));

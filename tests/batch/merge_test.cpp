@@ -15,6 +15,7 @@
 #include <roiclip/batch/merge.hpp>
 #include <roiclip/batch/run.hpp>
 
+#include "read_text.hpp"
 #include "temp_dir.hpp"
 
 #ifdef ROICLIP_HAVE_MERGE_COMMAND
@@ -28,14 +29,8 @@ using Json = nlohmann::json;
 namespace {
 
 const fs::path kImages = ROICLIP_IMAGES;
+using roiclip::testing::readText;
 using roiclip::testing::TempDir;
-
-std::string readText(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 // Copies of bundled scenes (and, for "broken.png", a file that is not an image) in `folder`.
 void fill(const fs::path& folder, const std::vector<std::string>& files) {
@@ -67,6 +62,15 @@ std::string withoutFolders(std::string text, const std::vector<fs::path>& folder
       text.replace(at, f.size(), "IN");
   }
   return text;
+}
+
+// Shards s1 (scene_01, default options) and s2 (scene_02, min_area minArea2 when > 0) in `t`,
+// run from input folders in1 and in2.
+void twoShards(const fs::path& t, double minArea2 = 0.0) {
+  fill(t / "in1", {"scene_01.png"});
+  fill(t / "in2", {"scene_02.png"});
+  runInto(t / "in1", t / "s1");
+  runInto(t / "in2", t / "s2", minArea2);
 }
 
 // summary.csv without its `seconds` column (times differ from run to run) and the input
@@ -169,10 +173,7 @@ TEST(BatchMerge, TwoShardsGiveTheSummaryOfOneRunOverAll) {
 TEST(BatchMerge, DifferentOptionsAreRefusedNamingTheKey) {
   const TempDir tmp("merge_options");
   const fs::path t = tmp.path();
-  fill(t / "in1", {"scene_01.png"});
-  fill(t / "in2", {"scene_02.png"});
-  runInto(t / "in1", t / "s1");
-  runInto(t / "in2", t / "s2", /*minArea=*/50.0);
+  twoShards(t, /*minArea2=*/50.0);
   rb::MergeOptions m;
   m.output = t / "merged";
   m.shards = {t / "s1", t / "s2"};
@@ -225,10 +226,7 @@ TEST(BatchMerge, AnImageInTwoShardsOrAFolderThatIsNoRunIsRefused) {
 TEST(BatchMerge, CommandMergesAndRefusesDifferentOptions) {
   const TempDir tmp("merge_command");
   const fs::path t = tmp.path();
-  fill(t / "in1", {"scene_01.png"});
-  fill(t / "in2", {"scene_02.png"});
-  runInto(t / "in1", t / "s1");
-  runInto(t / "in2", t / "s2");
+  twoShards(t);
   runInto(t / "in2", t / "s3", /*minArea=*/50.0);
   const auto parse = [](std::vector<std::string> args, std::ostream& out) {
     CLI::App app;

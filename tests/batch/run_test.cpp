@@ -27,6 +27,7 @@
 
 #include "detail/folder.hpp"
 #include "detail/report.hpp"
+#include "read_text.hpp"
 #include "temp_dir.hpp"
 
 namespace fs = std::filesystem;
@@ -40,12 +41,7 @@ const fs::path kData = ROICLIP_TEST_DATA;
 
 using roiclip::testing::TempDir;
 
-std::string readText(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using roiclip::testing::readText;
 
 Json readJson(const fs::path& file) { return Json::parse(readText(file)); }
 

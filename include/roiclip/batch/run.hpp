@@ -17,6 +17,7 @@
 #include <filesystem>
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <roiclip/batch/options.hpp>
@@ -84,6 +85,25 @@ struct RunSummary {
   /// True when every finished image is Ok and the run was not interrupted.
   [[nodiscard]] bool allOk() const {
     return !interrupted && ok == images.size() && images.size() == total;
+  }
+  /// Append a finished image's row to `images` and count it (ok ... mismatched, skipped).
+  void add(ImageRecord record) {
+    switch (record.status) {
+      case Status::Ok:
+        ++ok;
+        break;
+      case Status::NoRoi:
+        ++noRoi;
+        break;
+      case Status::Failed:
+        ++failed;
+        break;
+      case Status::MaskMismatch:
+        ++mismatched;
+        break;
+    }
+    if (record.skipped) ++skipped;
+    images.push_back(std::move(record));
   }
 };
 
