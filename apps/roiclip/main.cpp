@@ -14,6 +14,7 @@
 #include "geometry_commands.hpp"
 
 #ifdef ROICLIP_HAVE_BATCH
+#include "merge_command.hpp"
 #include "run_command.hpp"
 #endif
 
@@ -83,6 +84,7 @@ int runMain(int argc, char** argv) {
 #ifdef ROICLIP_HAVE_BATCH
   RunCommand runCommand(app);
   auto* run = runCommand.subcommand();
+  addMergeCommand(app);
 #else
   auto* run = app.add_subcommand("run", "process a folder of images (not built: needs AprilTag)");
   run->allow_extras();

@@ -1,4 +1,4 @@
-// The run's summary files: summary.csv, summary.json and report.html.
+// The run's summary files: summary.csv and summary.json (report.html: report_html.cpp).
 #include "detail/report.hpp"
 #include "detail/result_json.hpp"  // kStageTimes
 
@@ -18,12 +18,6 @@ std::string inputList(const BatchOptions& options) {
 
 namespace {
 
-std::string roiList(const RunOptions& options) {
-  std::string out;
-  for (const std::string& roi : options.rois) out += (out.empty() ? "" : " + ") + roi;
-  return out;
-}
-
 using Json = nlohmann::json;
 
 std::string csvField(const std::string& s) {
@@ -34,46 +28,6 @@ std::string csvField(const std::string& s) {
     out += (c == '\n' || c == '\r') ? ' ' : c;
   }
   return out + "\"";
-}
-
-std::string htmlEscape(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      case '\'':
-        out += "&#39;";
-        break;
-      default:
-        out += c;
-    }
-  }
-  return out;
-}
-
-// Percent-encode everything but unreserved characters and '/', for relative URLs.
-std::string urlEncode(const std::string& s) {
-  std::ostringstream os;
-  for (unsigned char c : s) {
-    if (std::isalnum(c) || c == '-' || c == '_' || c == '.' || c == '~' || c == '/') {
-      os << c;
-    } else {
-      os << '%' << std::uppercase << std::hex << std::setw(2) << std::setfill('0')
-         << static_cast<int>(c) << std::dec;
-    }
-  }
-  return os.str();
 }
 
 std::string fmt(double v, int precision) {
@@ -180,45 +134,6 @@ std::string summaryJson(const RunSummary& summary, const BatchOptions& options) 
             {"coco", options.coco.empty() ? Json(nullptr) : Json(options.coco.string())},
             {"images", std::move(rows)}};
   return j.dump(1) + "\n";
-}
-
-std::string reportHtml(const RunSummary& summary, const BatchOptions& options) {
-  std::ostringstream os;
-  os << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">"
-     << "<title>roiclip run: " << htmlEscape(inputList(options)) << "</title>\n"
-     << "<style>body{font-family:sans-serif;margin:1em;background:#f4f4f4}"
-     << "figure{display:inline-block;vertical-align:top;margin:.5em;padding:.5em;"
-     << "background:#fff;max-width:48%}figure img{max-width:100%}"
-     << "table{border-collapse:collapse;font-size:90%}td,th{padding:.1em .5em;text-align:right}"
-     << ".bad{color:#b00}</style></head><body>\n"
-     << "<h1>roiclip run</h1>\n<p>Input <code>" << htmlEscape(inputList(options))
-     << "</code>, ROI <code>" << htmlEscape(roiList(options.process)) << "</code>, contours <code>"
-     << toString(options.process.contours.method) << "</code>, fill rule <code>"
-     << toString(options.process.subjectFillRule) << "</code>. " << summary.images.size() << " of "
-     << summary.total << " images: " << summary.ok << " ok, " << summary.noRoi << " no-roi, "
-     << summary.failed << " failed, " << summary.mismatched << " mask-mismatch"
-     << (summary.interrupted ? " (interrupted)" : "") << ".</p>\n";
-  for (const auto& r : summary.images) {
-    const bool ok = r.status == Status::Ok;
-    os << "<figure>";
-    if (r.status != Status::Failed || r.width > 0) {
-      os << "<a href=\"" << urlEncode(r.name) << ".overlay.png\"><img loading=\"lazy\" src=\""
-         << urlEncode(r.name) << ".overlay.png\" alt=\"" << htmlEscape(r.image) << "\"></a>";
-    }
-    os << "<figcaption><b>" << htmlEscape(r.image) << "</b> <span" << (ok ? "" : " class=\"bad\"")
-       << ">" << toString(r.status) << "</span>";
-    if (!r.reason.empty()) os << ": " << htmlEscape(r.reason);
-    os << "<table><tr><th>tags</th><th>ROI px&sup2;</th><th>contours in/out</th>"
-       << "<th>clipped px&sup2;</th><th>IoU</th><th>off-band</th><th>s</th></tr><tr><td>"
-       << r.tagsFound << "</td><td>" << fmt(r.roiArea, 1) << "</td><td>" << r.contoursIn << "/"
-       << r.contoursOut << "</td><td>" << fmt(r.clippedArea, 1) << "</td><td>"
-       << (r.iou ? fmt(*r.iou, 4) : std::string()) << "</td><td>" << r.offBandMismatches
-       << "</td><td>" << (r.skipped ? std::string("skipped") : fmt(r.seconds, 3))
-       << "</td></tr></table>"
-       << "<a href=\"" << urlEncode(r.name) << ".json\">JSON</a></figcaption></figure>\n";
-  }
-  os << "</body></html>\n";
-  return os.str();
 }
 
 }  // namespace roiclip::batch::detail

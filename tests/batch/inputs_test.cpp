@@ -188,8 +188,10 @@ TEST(BatchInputs, ExifRotatedJpegIsProcessedUpright) {
   EXPECT_EQ(s.images[0].status, rb::Status::Ok);
   EXPECT_EQ(s.images[0].width, upright.cols);
   EXPECT_EQ(s.images[0].height, upright.rows);
-  EXPECT_EQ(cv::imread((tmp.path() / "out" / "rotated.overlay.png").string()).size(),
-            upright.size());
+  // The overlay is the upright image with the caption band above it.
+  const cv::Mat overlay = cv::imread((tmp.path() / "out" / "rotated.overlay.png").string());
+  EXPECT_EQ(overlay.cols, upright.cols);
+  EXPECT_GT(overlay.rows, upright.rows);
 }
 
 TEST(BatchInputs, ExifOrientationKeepsSixteenBitAndAlpha) {

@@ -1,5 +1,6 @@
 // processImage() on the bundled scenes (against the generator's exact ground truth) and on
 // every per-image failure path.
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <set>
@@ -186,24 +187,31 @@ TEST_P(BatchScene, DefaultHullContainsEveryTagCorner) {
       EXPECT_LE(p.y, box.y + box.height + 0.5);
     }
   }
-  // The overlay has the image's size and is colour; the mask is the clipped region.
+  // The overlay is the image's width and taller by the caption band above it, in colour; the
+  // mask is the clipped region.
   const cv::Mat overlay = rb::renderOverlay(image, r);
-  EXPECT_EQ(overlay.size(), image.size());
+  EXPECT_EQ(overlay.cols, image.cols);
+  ASSERT_GT(overlay.rows, image.rows);
+  const int band = overlay.rows - image.rows;
   EXPECT_EQ(overlay.type(), CV_8UC3);
-  // Outside the ROI the overlay is the image dimmed; far inside, away from any region, it is
-  // the image itself (the caption bar covers the top 22 rows).
+  // Outside the ROI the overlay is the image dimmed, from the first row on (the caption is in
+  // its own band, not over the image).
   cv::Mat roiMask = cv::Mat::zeros(image.size(), CV_8U);
   std::vector<cv::Point> hullInt;
   for (const auto& p : hull) hullInt.emplace_back(cvRound(p.x), cvRound(p.y));
   cv::fillConvexPoly(roiMask, hullInt, 255);
   cv::Mat near;
   cv::dilate(roiMask, near, cv::Mat(), {-1, -1}, 4);
+  // The ROI's name is written just above its top-left vertex.
+  const auto topLeft = std::min_element(hullInt.begin(), hullInt.end(),
+                                        [](auto a, auto b) { return a.x + a.y < b.x + b.y; });
+  cv::rectangle(near, cv::Rect(topLeft->x - 10, topLeft->y - 40, 120, 40), 255, cv::FILLED);
   int dimmedChecked = 0;
-  for (int y = 30; y < image.rows; y += 7) {
+  for (int y = 0; y < image.rows; y += 7) {
     for (int x = 0; x < image.cols; x += 7) {
       if (near.at<uchar>(y, x) != 0) continue;
       const int original = image.at<uchar>(y, x);
-      EXPECT_NEAR(overlay.at<cv::Vec3b>(y, x)[1], 0.35 * original, 1.0) << x << "," << y;
+      EXPECT_NEAR(overlay.at<cv::Vec3b>(y + band, x)[1], 0.35 * original, 1.0) << x << "," << y;
       ++dimmedChecked;
     }
   }

@@ -73,7 +73,8 @@ TEST(BatchRun, BundledImagesEndToEnd) {
     EXPECT_GT(j["clipped_area"].get<double>(), 0.0);
     const cv::Mat overlay = cv::imread((out / (name + ".overlay.png")).string());
     ASSERT_FALSE(overlay.empty()) << name;
-    EXPECT_EQ(overlay.size(), image.size()) << name;
+    EXPECT_EQ(overlay.cols, image.cols) << name;
+    EXPECT_GT(overlay.rows, image.rows) << name;  // the caption band above the image
     const cv::Mat mask = cv::imread((out / (name + ".mask.png")).string(), cv::IMREAD_UNCHANGED);
     ASSERT_EQ(mask.type(), CV_8UC1);
     EXPECT_EQ(mask.size(), image.size());
@@ -204,8 +205,8 @@ TEST(BatchRun, NoTagsAndMissingIdAreNoRoi) {
   const Json j = readJson(tmp.path() / "out" / "tagged.json");
   EXPECT_EQ(j["status"], "no-roi");
   EXPECT_EQ(j["missing_tags"]["missing"], Json::array({9}));
-  // The overlay still shows what was found (tags), at the image's size.
-  EXPECT_EQ(cv::imread((tmp.path() / "out" / "blank.overlay.png").string()).size(), blank.size());
+  // The overlay still shows what was found (tags), at the image's width (plus its caption band).
+  EXPECT_EQ(cv::imread((tmp.path() / "out" / "blank.overlay.png").string()).cols, blank.cols);
   // no-roi is a final answer for these options: skipped on the next run, reason kept.
   const rb::RunSummary again = rb::run(options);
   EXPECT_EQ(again.skipped, 2u);
@@ -310,8 +311,8 @@ TEST(BatchRun, ReadsSixteenBitAndColourFiles) {
   for (const auto& r : s.images) {
     EXPECT_EQ(r.tagsFound, 4) << r.image;
     EXPECT_EQ(r.offBandMismatches, 0) << r.image;
-    EXPECT_EQ(cv::imread((tmp.path() / "out" / (r.name + ".overlay.png")).string()).size(),
-              gray.size());
+    EXPECT_EQ(cv::imread((tmp.path() / "out" / (r.name + ".overlay.png")).string()).cols,
+              gray.cols);
   }
   // 16-bit scaled back to 8 bits exactly: the same figures as the 8-bit colour BMP.
   EXPECT_DOUBLE_EQ(s.images[0].clippedArea, s.images[2].clippedArea);  // colour.bmp, g16.png

@@ -159,13 +159,19 @@ const char* roiclipVersion();
 std::string resultToJson(const ImageResult& result, const std::string& imageName = {},
                          const std::string& optionsKey = {}, int frame = -1);
 
-/// The overlay image: the input (as BGR, 8-bit) dimmed outside the ROI, the ROI outline, every
-/// clipped region filled in a translucent colour with its outline, tag outlines and ids, and a
-/// one-line caption. Same size as `image`.
+/// The overlay image: the input (as BGR, 8-bit) dimmed outside the region, the region outline,
+/// each named ROI (ImageResult::rois) outlined in its own colour with its name, the excluded tag
+/// quads hatched in red, every clipped region filled in a translucent colour with its outline,
+/// tag outlines and ids. Line widths and fonts grow with the image (an 800 px long side is the
+/// reference). Above the image, in a black band of its own, the caption ("ok  tags 4  contours
+/// 11 of 16 inside  area ... px2", the reason when not ok) and a legend, wrapped to the width.
+/// @return `image.cols` wide and `image.rows` + the band's height tall; the image's pixels are
+///         rows [band, band + image.rows), band = result.rows - image.rows. Empty for an empty
+///         image.
 cv::Mat renderOverlay(const cv::Mat& image, const ImageResult& result);
 
 /// The clipped region (ImageResult::clipped) as a CV_8U mask (255 inside), exact pixel rule of
-/// opencv::rasterize.
+/// opencv::rasterize; the image's size (no caption band).
 cv::Mat renderMask(const ImageResult& result, const Grid& grid = {});
 
 }  // namespace roiclip::batch

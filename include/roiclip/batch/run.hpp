@@ -7,7 +7,7 @@
 //   NAME.mask.png      renderMask() (only with writeMasks)
 //   summary.csv        one row per image (ImageRecord's fields)
 //   summary.json       the same rows plus run totals
-//   report.html        every overlay with its figures
+//   report.html        counts, a sortable table of every image (failures first), the overlays
 //   BatchOptions::coco  the run as COCO instance annotations (only when asked; any path)
 // docs/outputs.md documents every file and field.
 // NAME is the image's relative path without its extension (with it when two images would
@@ -24,6 +24,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <roiclip/batch/options.hpp>
@@ -134,6 +135,25 @@ struct RunSummary {
   /// True when every finished image is Ok and the run was not interrupted.
   [[nodiscard]] bool allOk() const {
     return !interrupted && ok == images.size() && images.size() == total;
+  }
+  /// Append a finished image's row to `images` and count it (ok ... mismatched, skipped).
+  void add(ImageRecord record) {
+    switch (record.status) {
+      case Status::Ok:
+        ++ok;
+        break;
+      case Status::NoRoi:
+        ++noRoi;
+        break;
+      case Status::Failed:
+        ++failed;
+        break;
+      case Status::MaskMismatch:
+        ++mismatched;
+        break;
+    }
+    if (record.skipped) ++skipped;
+    images.push_back(std::move(record));
   }
 };
 
