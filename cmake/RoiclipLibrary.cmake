@@ -10,6 +10,8 @@
 # Static by default; shared with -DBUILD_SHARED_LIBS=ON, as libroiclip_COMPONENT.so.VERSION with
 # SOVERSION MAJOR.MINOR while the major version is 0 (every 0.x minor version may break the ABI:
 # 0.2.x share libroiclip_core.so.0.2), MAJOR from 1.0 on. Symbols keep the default visibility.
+# Installed shared libraries find each other through RPATH $ORIGIN (all in one folder), so a
+# program linked against libroiclip_opencv.so in any prefix loads libroiclip_core.so from it too.
 if(roiclip_VERSION_MAJOR EQUAL 0)
   set(ROICLIP_SOVERSION ${roiclip_VERSION_MAJOR}.${roiclip_VERSION_MINOR})
 else()
@@ -23,7 +25,8 @@ function(roiclip_add_library component)
   set_target_properties(${target} PROPERTIES EXPORT_NAME ${component} OUTPUT_NAME roiclip_${component}
                                              POSITION_INDEPENDENT_CODE ON
                                              VERSION ${roiclip_VERSION}
-                                             SOVERSION ${ROICLIP_SOVERSION})
+                                             SOVERSION ${ROICLIP_SOVERSION}
+                                             INSTALL_RPATH "$ORIGIN")
   target_link_libraries(${target} PUBLIC ${ARG_PUBLIC} PRIVATE ${ARG_PRIVATE})
   roiclip_set_warnings(${target})
   install(TARGETS ${target} EXPORT roiclip_${component}_targets

@@ -2,6 +2,7 @@
 #
 # Builds the API reference from docs/Doxyfile into OUT (plus the generated version.hpp) and fails
 # on any Doxygen warning, except the undocumented members listed in docs/doxygen_undocumented.txt.
+cmake_minimum_required(VERSION 3.22)
 file(MAKE_DIRECTORY ${OUT})
 file(READ ${SOURCE_DIR}/docs/Doxyfile config)
 string(APPEND config "\nOUTPUT_DIRECTORY = ${OUT}\nINPUT += ${VERSION_HEADER}\n"

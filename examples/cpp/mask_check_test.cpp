@@ -20,7 +20,10 @@ TEST(MaskCheck, ClipAgreesWithTheRasterRoute) {
   const roiclip::opencv::MaskCheck check = roiclip::opencv::checkRoiClip(
       kSubject, kRoi, result, roiclip::FillRule::EvenOdd, roiclip::FillRule::EvenOdd, kImage);
   EXPECT_TRUE(check.ok()) << "vector vs raster: " << check.vectorVsRaster;
-  EXPECT_GT(check.vectorVsRaster.iou, 0.99);
+  // Within the band the raster routes may differ (a pixel centre on an edge, rounding of the
+  // result's vertices); off it they agree exactly. The whole-image IoU includes the band.
+  EXPECT_EQ(check.vectorVsRaster.offBandIou, 1.0);
+  EXPECT_GT(check.vectorVsRaster.iou, 0.95);
 }
 
 TEST(MaskCheck, CatchesAWrongResult) {
