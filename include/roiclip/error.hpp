@@ -42,10 +42,10 @@ enum class Axis : std::uint8_t { None, X, Y };
 struct InputLocation {
   /// The name of the input (a file name); when set, messages name it instead of the operand.
   std::string source;
-  Operand operand = Operand::None;
+  Operand operand = Operand::None;    ///< which operand the path belongs to
   std::optional<std::size_t> path;    ///< index of the path within its operand
   std::optional<std::size_t> vertex;  ///< index of the vertex within its path
-  Axis axis = Axis::None;
+  Axis axis = Axis::None;             ///< which coordinate of the vertex is wrong
 };
 
 /// The caller passed input that cannot be processed: NaN or infinite coordinates, coordinates
@@ -67,6 +67,7 @@ class InvalidInputError : public Error {
         location_(std::move(location)),
         problem_(std::move(problem)) {}
 
+  /// Where the error lies (every field unset for an error made from a message alone).
   [[nodiscard]] const InputLocation& location() const noexcept { return location_; }
   /// The message without its location ("y is not a finite number" is AXIS + " " + problem()).
   [[nodiscard]] const std::string& problem() const noexcept { return problem_; }

@@ -67,8 +67,9 @@ struct Polygon {
 /// A region as a forest of polygons with holes (like OpenCV's contour hierarchy: each hole
 /// knows its outer ring, each island knows the hole it sits in). Parents come before children.
 struct PolygonSet {
-  std::vector<Polygon> polygons;
+  std::vector<Polygon> polygons;  ///< parents before children
 
+  /// True when the region is empty (no polygons).
   [[nodiscard]] bool empty() const { return polygons.empty(); }
   /// Total filled area in square pixels (outer areas minus hole areas).
   [[nodiscard]] double area() const;

@@ -34,7 +34,7 @@ enum class Corner : int {
 
 /// One decoded tag. All coordinates in OpenCV pixel-centre convention.
 struct Detection {
-  int id = -1;
+  int id = -1;                  ///< the tag's id in its family
   std::string family;           ///< e.g. "tag36h11"
   int hamming = 0;              ///< number of corrected bit errors
   double decisionMargin = 0;    ///< libapriltag's decode quality (higher is better)
@@ -177,7 +177,9 @@ class Detector {
   ///         the option).
   explicit Detector(DetectorOptions options = {});
   ~Detector();
+  /// Move only; a moved-from Detector throws Error from detect().
   Detector(Detector&&) noexcept;
+  /// Move only, as the move constructor.
   Detector& operator=(Detector&&) noexcept;
   Detector(const Detector&) = delete;
   Detector& operator=(const Detector&) = delete;
@@ -191,10 +193,12 @@ class Detector {
   [[nodiscard]] std::vector<Detection> detect(cv::InputArray image) const;
 
   /// As detect(), also returning the rejected detections and the decimation used.
+  /// @param image as detect().
   /// @param quadDecimate overrides DetectorOptions::quadDecimate for this call when > 0 (for
   ///        a finer second try after the automatic factor missed a tag).
   [[nodiscard]] DetectionReport detectReport(cv::InputArray image, float quadDecimate = 0) const;
 
+  /// The options this Detector was made with.
   [[nodiscard]] const DetectorOptions& options() const;
 
  private:

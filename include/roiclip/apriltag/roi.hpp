@@ -46,7 +46,9 @@ struct MissingTags {
 /// Thrown when a failed result is used as if it had succeeded.
 class MissingTagsError : public Error {
  public:
+  /// The error for `info`; what() includes info.describe().
   explicit MissingTagsError(MissingTags info);
+  /// Which tags were needed, seen and missing.
   [[nodiscard]] const MissingTags& info() const { return info_; }
 
  private:
@@ -57,9 +59,13 @@ class MissingTagsError : public Error {
 template <class T>
 class TagResult {
  public:
-  TagResult(T value) : value_(std::move(value)) {}                // NOLINT: implicit on purpose
+  /// A successful result.
+  TagResult(T value) : value_(std::move(value)) {}  // NOLINT: implicit on purpose
+  /// A failed result.
   TagResult(MissingTags missing) : value_(std::move(missing)) {}  // NOLINT
+  /// True when the result holds a value.
   [[nodiscard]] bool ok() const { return value_.index() == 0; }
+  /// ok().
   explicit operator bool() const { return ok(); }
   /// The value. @throws MissingTagsError when !ok(), so a failure is never read as empty.
   [[nodiscard]] const T& value() const {
@@ -115,17 +121,17 @@ RoiResult tagFrameRoi(const std::vector<Detection>& detections, int id, const Pa
 
 /// A named ROI in a board frame.
 struct BoardRoi {
-  std::string name;
-  Paths paths;  ///< board frame units
+  std::string name;  ///< the name `--roi board:NAME` and boardRoi() select it by
+  Paths paths;       ///< board frame units
 };
 
 /// A planar board: tag corners and ROI polygons in one board frame (any unit, e.g. mm).
 struct Board {
-  std::string family = "tag36h11";
+  std::string family = "tag36h11";  ///< tag family of the board's tags
   /// Corners per tag id, indexed by Corner (bottom-left, bottom-right, top-right, top-left of the
   /// upright tag), in board units.
   std::map<int, std::array<glm::dvec2, 4>> tags;
-  std::vector<BoardRoi> rois;
+  std::vector<BoardRoi> rois;      ///< the named ROIs, in file order
   std::string units;               ///< board frame unit ("mm"); informative, empty if not given
   std::optional<glm::dvec2> size;  ///< board width and height in `units`; informative
 
@@ -145,11 +151,11 @@ struct Board {
 
 /// The fitted image-from-board homography.
 struct BoardFit {
-  glm::dmat3 imageFromBoard{1.0};
-  std::vector<int> tagsUsed;  ///< board tags found in the detections
-  int cornersUsed = 0;        ///< 4 per used tag
-  int inliers = 0;            ///< corners RANSAC kept (all of them for one tag)
-  double rmsError = 0;        ///< reprojection RMS over the inlier corners, px
+  glm::dmat3 imageFromBoard{1.0};  ///< maps board (x, y, 1) to image pixels (column-major GLM)
+  std::vector<int> tagsUsed;       ///< board tags found in the detections
+  int cornersUsed = 0;             ///< 4 per used tag
+  int inliers = 0;                 ///< corners RANSAC kept (all of them for one tag)
+  double rmsError = 0;             ///< reprojection RMS over the inlier corners, px
 };
 
 /// Fit image-from-board to the corners of every detected board tag (detections of other
@@ -167,9 +173,15 @@ RoiResult boardRoi(const Board& board, const std::vector<Detection>& detections,
 
 /// A parsed ROI description, as a command line gives it (`--roi tags:0,1,2,3`).
 struct RoiSpec {
-  enum class Kind { Tags, Hull, Board, TagFrame };
-  Kind kind = Kind::Tags;
-  std::vector<int> ids;  ///< Tags: the order; Hull: the set (empty = all); TagFrame: 1
+  /// Which builder the spec calls.
+  enum class Kind {
+    Tags,     ///< polygonThroughTags()
+    Hull,     ///< convexHullOfTags()
+    Board,    ///< boardRoi()
+    TagFrame  ///< tagFrameRoi()
+  };
+  Kind kind = Kind::Tags;  ///< the builder
+  std::vector<int> ids;    ///< Tags: the order; Hull: the set (empty = all); TagFrame: 1
   /// Tags only: the anchor of each id (same length as ids).
   std::vector<TagAnchor> anchors;
   std::string roiName;  ///< Board only (empty = all of the board's ROIs)

@@ -61,7 +61,7 @@ RingOrientation parseRingOrientation(const char* name);
 /// A feature with its structure kept: a list of polygons, each a list of rings (ring 0 the outer
 /// ring, then the inner rings), rings without the repeated closing point.
 struct Feature {
-  std::vector<Paths> polygons;
+  std::vector<Paths> polygons;  ///< each polygon: its outer ring, then its inner rings
   /// The feature's properties whose values are strings (others are in propertiesJson only).
   std::map<std::string, std::string> properties;
   /// The GeoJSON "id" member as JSON text (`"a1"`, `7`), or empty when the feature has none.
@@ -84,8 +84,8 @@ Feature toFeature(const PolygonSet& set);
 
 /// The name of the input (a file) an operand of the core was read from.
 struct Source {
-  Operand operand;
-  std::string name;
+  Operand operand;   ///< the operand read from it
+  std::string name;  ///< its name in messages (sourceName())
 };
 
 /// `e` naming the source of the operand it concerns (e.location().operand, a field: the message
@@ -169,7 +169,7 @@ std::string sourceName(const std::string& file);
 
 /// Options of the writers.
 struct WriteOptions {
-  RingOrientation orientation = RingOrientation::Rfc7946;
+  RingOrientation orientation = RingOrientation::Rfc7946;  ///< ring order written
   int indent = -1;  ///< GeoJSON: spaces per indentation level, or -1 for a single line
 };
 

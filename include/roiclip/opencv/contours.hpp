@@ -37,17 +37,18 @@ enum class Polarity { Dark, Light };
 
 /// Contour detection settings.
 struct ContourOptions {
-  ContourMethod method = ContourMethod::Otsu;
-  Polarity polarity = Polarity::Dark;
-  int threshold = 128;     ///< ContourMethod::Threshold: objects are <= threshold (Dark) or > it
-  int adaptiveBlock = 51;  ///< odd, >= 3
-  double adaptiveC = 10.0;
-  double cannyLow = 50.0;
-  double cannyHigh = 150.0;
+  ContourMethod method = ContourMethod::Otsu;  ///< how the object mask is made
+  Polarity polarity = Polarity::Dark;          ///< which pixels are objects
+  int threshold = 128;       ///< ContourMethod::Threshold: objects are <= threshold (Dark) or > it
+  int adaptiveBlock = 51;    ///< odd, >= 3
+  double adaptiveC = 10.0;   ///< ContourMethod::Adaptive: offset subtracted from the local mean
+  double cannyLow = 50.0;    ///< cv::Canny's lower hysteresis threshold
+  double cannyHigh = 150.0;  ///< cv::Canny's upper hysteresis threshold
   /// cv::approxPolyDP epsilon in px applied to every contour (0 = off). approxPolyDP may make
   /// contours self-intersect; the core resolves them under the fill rule.
   double approxEpsilon = 0.0;
-  /// Outer contours whose |cv::contourArea| is below this (px^2) are dropped with their holes.
+  /// Outer contours whose absolute cv::contourArea is below this (px^2) are dropped with their
+  /// holes.
   double minArea = 0.0;
   /// Also trace the Canny edges (cannyLow, cannyHigh) as open polylines (see edges.hpp).
   /// Independent of `method`; detectContours() itself ignores it.

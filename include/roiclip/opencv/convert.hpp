@@ -75,8 +75,8 @@ std::vector<ContourGroup> groupContours(cv::InputArrayOfArrays contours, cv::Inp
 /// hierarchy[i] = {next, previous, firstChild, parent}, -1 where there is none.
 template <typename PointT>
 struct Contours {
-  std::vector<std::vector<PointT>> contours;
-  std::vector<cv::Vec4i> hierarchy;
+  std::vector<std::vector<PointT>> contours;  ///< the rings, as cv::findContours returns them
+  std::vector<cv::Vec4i> hierarchy;           ///< one {next, previous, firstChild, parent} each
 };
 
 /// Convert a polygon set to integer cv::Point contours (+ RETR_CCOMP hierarchy). Ring
@@ -100,8 +100,8 @@ Contours<cv::Point2d> toContours2d(const PolygonSet& set);
 /// no shift (only an offset), so it would draw these 2^shift times too large; give it
 /// toContours() instead, or draw with fillPolygonSet() / drawPolygonSet().
 struct FixedPointContours {
-  Contours<cv::Point> contours;
-  int shift = kDefaultShift;
+  Contours<cv::Point> contours;  ///< coordinates scaled by 2^shift
+  int shift = kDefaultShift;     ///< fractional bits, for cv::fillPoly / cv::polylines
 };
 /// Convert a polygon set to fixed-point contours; pass `shift` on to OpenCV's drawing calls.
 /// @param shift fractional bits, 0..16 (cv::fillPoly's limit).

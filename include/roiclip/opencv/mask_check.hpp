@@ -69,7 +69,7 @@ struct MaskCheckOptions {
   ClipOp op = ClipOp::Intersection;
   double exactBand = kExactBand;    ///< band for (a) vs (b)
   double openCvBand = kOpenCvBand;  ///< band for (a) vs (c)
-  Grid grid{};
+  Grid grid{};                      ///< the grid the result was clipped on
 };
 
 /// What checkRoiClip() found.
