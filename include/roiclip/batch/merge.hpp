@@ -35,12 +35,18 @@ struct MergeOptions {
 /// JSON text; "null" when the key is missing).
 class OptionsMismatchError : public InvalidInputError {
  public:
+  /// The message is formatted from the fields (every accessor below returns one of them).
   OptionsMismatchError(std::string key, std::filesystem::path firstShard, std::string firstValue,
                        std::filesystem::path otherShard, std::string otherValue);
+  /// The option that differs, as named in summary.json ("min_area").
   [[nodiscard]] const std::string& key() const noexcept { return key_; }
+  /// The first shard folder given.
   [[nodiscard]] const std::filesystem::path& firstShard() const noexcept { return firstShard_; }
+  /// The shard folder whose value differs from the first one's.
   [[nodiscard]] const std::filesystem::path& otherShard() const noexcept { return otherShard_; }
+  /// The option's value in firstShard(), as JSON text.
   [[nodiscard]] const std::string& firstValue() const noexcept { return firstValue_; }
+  /// The option's value in otherShard(), as JSON text.
   [[nodiscard]] const std::string& otherValue() const noexcept { return otherValue_; }
 
  private:

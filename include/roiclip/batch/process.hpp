@@ -129,6 +129,7 @@ class Processor {
   /// RunOptions::maxPixels before decoding; see docs/outputs.md) and process it. A file that
   /// cannot be read gives Status::Failed with FailureKind::Unreadable or TooLarge and a reason
   /// naming the file; seconds.read is the time spent reading and decoding.
+  /// @param file the image file.
   /// @param image receives the decoded image (empty when unreadable), e.g. for renderOverlay().
   [[nodiscard]] ImageResult processFile(const std::string& file, cv::Mat* image = nullptr) const;
 

@@ -39,8 +39,8 @@ namespace roiclip::batch {
 /// processes started with the same inputs and index 0..N-1 (a Slurm array, a Kubernetes indexed
 /// Job, GNU parallel) process every input once between them.
 struct Shard {
-  int index = 0;
-  int count = 1;
+  int index = 0;  ///< this process's share, 0 .. count - 1
+  int count = 1;  ///< number of shares; 1 processes every input
 };
 
 /// Parse "I/N" (0 <= I < N, e.g. "0/4" .. "3/4").
