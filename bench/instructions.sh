@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Instructions per operation (callgrind) for benchmark rows of roiclip_bench: repeatable on a
 # loaded machine, where CPU times move by 1.5x between runs. One iteration per row; only the
 # library calls are counted (roiclip::clip / simplify / clipLines; Clipper's AddPath, Execute

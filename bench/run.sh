@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Build roiclip_bench (Release) and run it, then print the Markdown results table.
 #   bench/run.sh                       # full run: cheap rows repeated, heavy rows once
 #   bench/run.sh --benchmark_filter=Clip/   # one pass with these Google Benchmark flags

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # roiclip_add_library(COMPONENT SOURCES file... [PUBLIC dep...] [PRIVATE dep...])
 #
 # One library component: target roiclip_COMPONENT, alias roiclip::COMPONENT, warnings, install,

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Decides the default of ROICLIP_BUILD_PYTHON (included by the top-level CMakeLists.txt before the
 # option): ON when roiclip is the top-level project and Debian's Python 3 (/usr/bin/python3 with
 # python3-dev) and pybind11 (pybind11-dev, its CMake config) are found; OFF otherwise, with a

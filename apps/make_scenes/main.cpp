@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // roiclip-make-scenes: render the synthetic AprilTag scenes in images/ with exact ground truth.
 //
 // A 400 x 300 mm board carries four tag36h11 tags and dark shapes (blobs, a self-crossing

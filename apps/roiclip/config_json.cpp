@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // CLI11's config reader for JSON: one object of option names and values.
 #include "config_json.hpp"
 

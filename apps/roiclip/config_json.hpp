@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // `roiclip run --config FILE`: CLI11's config reader for JSON. The file is one object whose keys
 // are the long option names without the dashes: {"roi": ["hull", "board:inspection"],
 // "jobs": 2, "force": true}. CLI11 reads config files on the main app only, so the items go to

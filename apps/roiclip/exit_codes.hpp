@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // roiclip command line: the exit codes, in one table. Every command returns these, and --help
 // prints them from the same table (exitCodesHelp()).
 #pragma once

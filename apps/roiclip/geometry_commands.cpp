@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // `roiclip simplify`, `clip` and `clip-lines`: option setup and execution.
 #include "geometry_commands.hpp"
 

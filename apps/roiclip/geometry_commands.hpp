@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // `roiclip simplify`, `clip` and `clip-lines`: their options, and their work (read the files,
 // call roiclip::io's feature-wise operations or the core, write GeoJSON or WKT).
 #pragma once

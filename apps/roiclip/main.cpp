@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // roiclip command line: set up the subcommands, dispatch, and turn exceptions into exit codes
 // (exit_codes.hpp). The commands live in geometry_commands.* and run_command.*; `roiclip help
 // [COMMAND]` prints the same help as `roiclip [COMMAND] --help`.

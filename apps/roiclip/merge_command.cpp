@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // `roiclip merge`: argument parsing and the line of counts. The work is roiclip::batch::merge.
 #include "merge_command.hpp"
 

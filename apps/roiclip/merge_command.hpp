@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // `roiclip merge OUT DIR...`: shard output folders of `roiclip run` into one
 // (roiclip::batch::merge).
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The progress bar of `roiclip run`, and the pipe that keeps other stderr output off it.
 #include "progress_line.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // `roiclip run`'s progress on stderr: a bar redrawn in place on a terminal, one line per image
 // otherwise.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // `roiclip run`: option setup, checks, the run with its progress, and the summary.
 #include "run_command.hpp"
 

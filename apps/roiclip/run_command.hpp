@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // `roiclip run`: its options, bound to the fields of roiclip::batch::BatchOptions (so the
 // library's defaults are the command's, and --help shows them), and its execution. The work is
 // roiclip::batch.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Throughput of the main job at 1080p: batch::Processor::process on 200 generated HD scenes
 // (the bundled scenes upscaled to 1080 rows, padded to 1920 columns with the table grey, a
 // brightness offset per copy, as tests/batch/make_hd_scenes.cpp writes them), one thread.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Conversions between roiclip paths and the native types of the libraries it is compared with:
 // Clipper 1 (integer units, scaled exactly like roiclip's default grid; the adapter the tests
 // use), Boost.Geometry and the GEOS C API. Conversions run outside the timed loops; only the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Global operator new/delete replacement that counts allocations and tracks the peak live heap.
 // Sizes come from malloc_usable_size (glibc), so no header is prepended and sized/unsized delete
 // both work; the counts are therefore in usable bytes, a few percent above the requested size.

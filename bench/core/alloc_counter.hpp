@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Heap accounting for the benchmark binary: alloc_counter.cpp replaces the global operator
 // new/delete (so it also sees allocations made inside Clipper, GEOS and Boost.Geometry) and
 // keeps running totals. Memory that a library takes with malloc() directly is not seen.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // roiclip_bench: roiclip against Clipper 1, Boost.Geometry and GEOS on the same inputs in one
 // run. The first iteration of each benchmark also (a) counts heap use and (b) checks, with the
 // timer paused, that its output area agrees with roiclip's; a large disagreement is a correctness

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Open polylines clipped to a perspective quad: roiclip::clipLines against Clipper 1 (open
 // subject paths), Boost.Geometry (linestring / polygon intersection, one call per line) and
 // GEOS (one MultiLineString / polygon intersection), in the same run as the polygon rows.

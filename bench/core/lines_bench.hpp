@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Benchmark rows for open polylines (lines_bench.cpp).
 #pragma once
 

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """Turn roiclip_bench JSON output (--benchmark_out_format=json) into the Markdown table of
 bench/RESULTS.md: CPU time per operation for each library and its ratio to roiclip
 (ratio > 1 means roiclip is faster), plus heap peaks. With --benchmark_repetitions the median

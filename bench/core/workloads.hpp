@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Benchmark workloads: deterministic (fixed-seed) polygon generators shaped like the inputs a
 // vision pipeline feeds roiclip. Every coordinate lies on roiclip's default 1/256 px grid, so
 // roiclip, Clipper (integer units), Boost.Geometry and GEOS (doubles) all see identical input.

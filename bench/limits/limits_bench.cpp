@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // roiclip_limits_bench: the core at the sizes tests/core/limits_test runs scaled down. Each case
 // runs in its own child process, so the peak resident memory (getrusage ru_maxrss) is that of
 // the case alone, input included. Prints one line per case: vertices, crossings, wall and CPU

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Vector vs raster ROI clipping of every contour of an image, in the same run.
 //
 // Both routes start from the contours cv::findContours found in the image and end with the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Clip the contours of an image to the region its AprilTags mark, and draw the result.
 //
 //   clip_to_tags IMAGE [OVERLAY.png]

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Clip a polygon with a hole (a frame) by a rectangle, and walk the result: each polygon's outer
 // ring, its holes, and where it is nested. Core only (standard library + GLM).
 //

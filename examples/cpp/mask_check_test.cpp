@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Check a clip result against raster masks in a GoogleTest, as roiclip's own tests do: the
 // rasterised result must equal (subject mask AND ROI mask) off a thin band around the edges.
 #include <roiclip/opencv/mask_check.hpp>

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """Clip the contours of an image to the convex hull of its AprilTags, exactly.
 
     PYTHONPATH=build/python python3 examples/python/clip_to_tags.py images/scene_01.png -o out.png

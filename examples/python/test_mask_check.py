@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """A pytest mask check, as a vision project would write one: the exact clip of the contours of
 images/scene_01.png to its tag hull agrees with the raster route (masks ANDed) off a thin band.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // roiclip: exception hierarchy. Every error the library throws derives from roiclip::Error.
 #pragma once
 

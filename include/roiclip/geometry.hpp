@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // roiclip: public geometry types. Includes only the standard library and GLM.
 //
 // Conventions (the same everywhere in roiclip):

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // roiclip: exact clipping of self-intersecting polygons (extended Weiler-Atherton).
 // This header includes only the standard library and GLM. See geometry.hpp for conventions.
 //

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """roiclip: exact clipping of self-intersecting polygons for vision pipelines.
 
 Arrays in, arrays out. A *path* is any array-like of shape (N, 2) or cv2's (N, 1, 2), int32 or

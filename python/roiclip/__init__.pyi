@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """Type stub of the roiclip package (the compiled module roiclip._roiclip, re-exported).
 
 Conventions: pixels, x right, y down, (0, 0) the centre of the top-left pixel (OpenCV's).

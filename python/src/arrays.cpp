@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "arrays.hpp"
 
 #include <cctype>

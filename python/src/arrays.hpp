@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // roiclip Python bindings: conversions between Python objects (numpy arrays, cv2 contours,
 // strings naming enums) and roiclip's C++ types. Every conversion runs in C++ on numpy buffers;
 // no per-point Python code. Functions here need the GIL.

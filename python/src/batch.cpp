@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Python binding of roiclip::batch: process_image(), the `roiclip run` pipeline on one image,
 // returning the NAME.json record (batch::resultToJson) as a dict.
 #include <cstdint>

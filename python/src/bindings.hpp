@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // roiclip Python bindings: the parts of the module, each defined in its own file.
 #pragma once
 

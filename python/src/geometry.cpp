@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Python bindings of the core (roiclip/roiclip.hpp): enums, PolygonSet, the boolean operations
 // and clip_lines, plus cv2 contour conversions (roiclip/opencv/convert.hpp) and from_shapely.
 #include <cstring>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The compiled part of the Python package roiclip (imported and re-exported by
 // roiclip/__init__.py). Exceptions: roiclip.Error (root), roiclip.InvalidInputError (also a
 // ValueError), roiclip.InternalError, roiclip.MissingTagsError, carrying the C++ library's

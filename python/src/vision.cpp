@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Python bindings of roiclip::apriltag (detection, ROI builders, boards) and of roiclip::opencv's
 // rasteriser and mask checks. Images are numpy arrays viewed as cv::Mat without a copy.
 #include <optional>

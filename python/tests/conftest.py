@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """Shared fixtures: the source tree (images/) and the bundled scene."""
 
 import os

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """cv2.findContours -> roiclip -> cv2.drawContours gives back the same pixels off a 1 px band."""
 
 import cv2

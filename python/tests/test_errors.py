@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """Errors are Python exceptions with the core's messages."""
 
 import numpy as np

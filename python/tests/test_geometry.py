@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """The core through Python: operand forms, enums and names, results and their conversions."""
 
 import numpy as np

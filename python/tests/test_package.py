@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """The package surface: version, stub in step with the module, docstrings on everything."""
 
 import ast

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """process_image(): the `roiclip run` pipeline on one image, returning the NAME.json record."""
 
 import concurrent.futures

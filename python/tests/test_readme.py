@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """The README's Python snippet runs, and prints the clipped area `roiclip run` reports."""
 
 import csv

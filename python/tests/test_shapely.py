@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """Areas against shapely on valid inputs; __geo_interface__ and from_shapely."""
 
 import math

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """Threads: results equal the sequential ones, and the GIL is released while the C++ runs."""
 
 import threading

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """AprilTag detection, ROI builders, rasterize and the mask checks, on images/scene_01.png."""
 
 import json

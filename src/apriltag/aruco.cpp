@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Tag corners in cv::aruco's order (clockwise on screen from the top-left, or from the
 // bottom-right for OpenCV 4's AprilTag dictionaries) and back.
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Boards: tag corners and ROI polygons in one board frame, read from and written to JSON, fitted
 // to the detections by a homography.
 #include <roiclip/apriltag/roi.hpp>

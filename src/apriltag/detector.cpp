@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // roiclip::apriltag::Detector over libapriltag 3.3. AprilTag headers stay in this file (and the
 // other .cpp files): common/math_util.h defines a `max` macro.
 #include <roiclip/apriltag/detector.hpp>

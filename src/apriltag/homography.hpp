@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Private helpers: conversions between cv::Matx33d and glm::dmat3, tag-frame homographies.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <roiclip/apriltag/projective.hpp>
 
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // ROI builders from AprilTag detections: polygons through tags, hulls of tags, polygons in a tag's
 // frame, and buildRoi() dispatching a parsed spec.
 #include <roiclip/apriltag/roi.hpp>

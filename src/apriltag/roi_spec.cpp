@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // ROI specs as a command line gives them (`--roi tags:0,1,2,3@top-left`).
 #include <roiclip/apriltag/roi.hpp>
 

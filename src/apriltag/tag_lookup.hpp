@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Private to roiclip::apriltag: detections indexed by id, shared by the ROI builders and the
 // board fit.
 #pragma once

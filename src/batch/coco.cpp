@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The run as COCO instance annotations. Choices (docs/outputs.md says why):
 // - one annotation per source contour (its clipped parts are one object), category "object";
 // - coordinates shifted by +0.5: COCO measures from the top-left corner of the image, roiclip

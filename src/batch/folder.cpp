@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // A run's inputs: folders, files, globs and list files, expanded into the files to process and
 // the output NAME of each.
 #include "detail/folder.hpp"

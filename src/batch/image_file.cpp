@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Reading image files: header first, size limit, then OpenCV decodes.
 //
 // Why these libraries: OpenCV 4.6 has no public call that returns an image's size without

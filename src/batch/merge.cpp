@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // `roiclip merge`: shard output folders into one (options checked, per-image files copied,
 // summaries and report written as one run over all the images would have).
 #include <roiclip/batch/merge.hpp>

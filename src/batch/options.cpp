@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Option and outcome texts (one table per enum, read both ways) and optionsKey().
 #include <roiclip/batch/options.hpp>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The overlay image and the mask of a processed image.
 //
 // Every line width, font size and gap of the overlay is a multiple of one unit that grows with

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The per-image pipeline: tags -> ROI -> contours -> exact clip -> mask check.
 //
 // The region: every ROI spec built from the tags and simplified under the ROI fill rule (one

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The run's summary files: summary.csv and summary.json (report.html: report_html.cpp).
 #include "detail/report.hpp"
 #include "detail/result_json.hpp"  // kStageTimes

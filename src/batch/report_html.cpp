@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // report.html: the counts, a sortable summary table (failures first) and a grid of overlays.
 #include "detail/report_html.hpp"
 

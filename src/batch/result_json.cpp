@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // NAME.json: one image's result as JSON (layout in docs/outputs.md), and what a run reads back
 // of it: the summary row for resuming, the clipped polygons for the COCO file.
 #include "detail/result_json.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // `roiclip run`: folders, files and videos through the per-image pipeline, in parallel,
 // resumable (per image and per video frame), shardable.
 #include <roiclip/batch/run.hpp>

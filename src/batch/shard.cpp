@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Sharding a run: a stable hash of each input's relative path picks its shard.
 #include "detail/shard.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The pipeline, in the order of the paper: split every self- and mutual intersection, classify
 // by winding number under the fill rules, trace simple contours with the stack method, fix the
 // orientation and nest holes in their outer rings.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Stage 2: decide from the winding numbers on both sides of each piece whether it bounds the
 // result, and on which side the result lies.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Open polylines (Canny edges, lane lines) clipped to a region.
 //
 // The polylines' segments go through the same sweep as the region's edges (stage 1), as open

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The convex fast path: an exact Sutherland-Hodgman pre-clip of the subject against a convex
 // clip ring (the quad through four tags is the common ROI).
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Small helpers on the public geometry types.
 #include <algorithm>
 #include <cctype>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Stage 0: validate input paths and snap them to the integer grid.
 #include <cmath>
 #include <string>

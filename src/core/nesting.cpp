@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Stage 4: nesting. Each hole gets its outer ring, each outer ring the hole it lies in.
 //
 // The sweep recorded, for every result piece, the nearest result piece below its left end. For

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // roiclip private header: the stages of the clipping pipeline and the data passed between them.
 // boolean_op.cpp strings them together; each stage lives in its own file.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // PolygonSet operands of clip() and its shorthands: a conversion to the set's rings under
 // kPolygonSetFillRule, then the Paths entry points (no other code path).
 #include <roiclip/roiclip.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // roiclip private header: every numeric decision of the pipeline lives here.
 //
 // Robustness strategy (the one place it is decided):

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Stage 1: find every self- and mutual intersection and split the edges there.
 //
 // A Bentley-Ottmann sweep in lexicographic (x, then y) order. Crossings are not swapped in the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Stage 3: link the result pieces into simple closed rings with the paper's stack method.
 //
 // Every result piece is directed so that the filled side is on its left; at every vertex as

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Atomic file writes and the cleaner for their temporaries (atomic_file.hpp).
 #include <roiclip/io/atomic_file.hpp>
 

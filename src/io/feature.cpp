@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Features (feature.hpp): the core's operations feature by feature, ring orientation, format
 // detection, "-" for standard input and output, and the snapping check.
 #include <roiclip/io/feature.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // GeoJSON / plain JSON path sets. nlohmann-json does the parsing and printing; this file only
 // walks the structure and says precisely where it is wrong.
 #include <roiclip/io/geojson.hpp>

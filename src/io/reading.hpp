@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // What the GeoJSON and WKT readers share: how they fail, how they check a ring or a line, how they
 // name a path by its flat index, and how they report dropped z coordinates.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // WKT regions and polylines (wkt.hpp). Boost.Geometry parses and prints each geometry; this file
 // splits GEOMETRYCOLLECTIONs (Boost 1.74's read_wkt has none), counts the values per point
 // (Boost would read "x y z" into a 2-D point as two points) and checks rings as the GeoJSON

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Clipping contour groups one by one, keeping each group's source contour index.
 #include <roiclip/opencv/clip_contours.hpp>
 

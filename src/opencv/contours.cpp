@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Contour detection (threshold / Canny -> cv::findContours -> groups of roiclip rings) and the
 // image conversions it needs.
 #include <roiclip/opencv/contours.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Conversions between OpenCV contours and roiclip paths.
 #include <roiclip/opencv/convert.hpp>
 

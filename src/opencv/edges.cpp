@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Open polylines: Canny edges traced into chains (the core's clipLines clips them to the ROI).
 #include <roiclip/opencv/edges.hpp>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Mask comparison and the vector-vs-raster check of an ROI clip.
 #include <roiclip/opencv/mask_check.hpp>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Exact scanline rasteriser: pixel centres against snapped paths, any fill rule.
 #include <roiclip/opencv/rasterize.hpp>
 

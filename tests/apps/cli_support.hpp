@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Running the built `roiclip` command line (ROICLIP_CLI) from a test: its exit code, stdout and
 // stderr; a fresh folder per test.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Runs the built `roiclip` command line (ROICLIP_CLI): simplify, clip and clip-lines on the files
 // in tests/data/io; checks their output, their stderr and their exit codes.
 #include <filesystem>

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # cmake -DCLI=<exe> -DARGS=<a|b|c> -DEXPECTED=<code> -P expect_exit_code.cmake
 string(REPLACE "|" ";" args "${ARGS}")
 execute_process(COMMAND ${CLI} ${args} RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The geometry commands in-process: the core calls of simplify / clip / clip-lines, and how their
 // errors come to name the file each operand was read from (by the error's fields, never by its
 // message text).

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """RFC 7946 ring order of `roiclip simplify` / `clip` output, checked with shapely.
 
 Usage: python3 rfc7946_orientation.py ROICLIP DATA_DIR

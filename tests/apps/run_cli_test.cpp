@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // `roiclip run` through the built binary (ROICLIP_CLI) on copies of the bundled scenes: exit
 // codes, messages, nothing created on bad options, --config, several ROIs, tags cut out or kept,
 // Ctrl-C and resume, other stderr output kept off the progress bar; and --version, help.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // `roiclip run`'s command line in-process (RunCommand, ConfigJson): the options land in the
 // library's structs, whose defaults are the command's; the JSON config reader's items and errors.
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Board files and the projective helpers: parsing, every error path, exact fits.
 #include <roiclip/apriltag/projective.hpp>
 #include <roiclip/apriltag/roi.hpp>

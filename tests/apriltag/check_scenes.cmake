@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Regenerate the scenes into a scratch directory and require the ground truth to match the
 # committed images/ byte for byte, so images/ always is what the generator makes.
 # Usage: cmake -DGENERATOR=<exe> -DIMAGES=<dir> -DOUT=<dir> -P check_scenes.cmake

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Detector wrapper: corner order, pixel convention, buffer handling, ownership, threads, errors.
 #include <roiclip/apriltag/detector.hpp>
 

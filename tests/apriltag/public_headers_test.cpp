@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The public roiclip::apriltag headers must not drag in libapriltag's headers: its
 // common/math_util.h defines a `max` macro that breaks <algorithm> and std::max.
 #include <roiclip/apriltag/detector.hpp>

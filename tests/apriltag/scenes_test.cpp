@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Detection and every ROI builder on the bundled scenes (images/), against their ground truth.
 #include <roiclip/apriltag/detector.hpp>
 #include <roiclip/apriltag/roi.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // roiclip::io atomic files: the one writer, its temporary names and the cleaner. (Here rather
 // than in tests/io because `roiclip run` is the writer's main user; the cases need only
 // roiclip::io.)

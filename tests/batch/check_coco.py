@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """Check a COCO file `roiclip run` wrote (BatchOptions::coco) the way a COCO reader sees it.
 
 Only json and numpy (pycocotools is not packaged in Debian), so the COCO API's own reading is

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Hostile image files for `roiclip run`, made from one good scene: truncated PNG and JPEG, an
 // empty file, a 1x1 image, decompression bombs (PNG, JPEG and TIFF headers claiming huge sizes, and
 // a genuinely decodable 20000 x 20000 PNG of ~50 KB), 16-bit, float, 2- and 4-channel images, a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Hostile image files through readImage() and run(): every one gets a status and a reason that
 // names the problem, the other images of the same run are processed, and decompression bombs
 // are refused from their header (the 20000 x 20000 PNG would take 400 MB decoded).

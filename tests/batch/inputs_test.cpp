@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The inputs of roiclip::batch::run(): several inputs, image files, globs, list files, videos
 // (one row per frame, resumed per frame), shards (an exact partition), EXIF orientation (a JPEG
 // and a 16-bit PNG with alpha, written here with their EXIF bytes) and 12-bit data in 16 bits.

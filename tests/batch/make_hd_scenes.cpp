@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Throughput input for `roiclip run`: N 1920x1080 scenes made from the bundled ones (upscaled to
 // 1080 rows, padded left and right with the table grey, a small brightness offset per copy so
 // the files differ). Not a test; build it with

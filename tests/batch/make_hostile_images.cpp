@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Writes the hostile image files of hostile_images.hpp into a folder and lists what a run must
 // report for each:  roiclip_batch_hostile_images DIR
 #include <filesystem>

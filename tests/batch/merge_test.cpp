@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // batch::merge() and `roiclip merge` (in-process): two shard folders give the summary one run
 // over all their images gives; shards run with different options, an image in two shards and a
 // folder that is no run output are refused.

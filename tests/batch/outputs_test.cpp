@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The output files a program reads (docs/outputs.md): the COCO file against the run's own masks,
 // its RLE encoder, null IoU for images the mask check did not see, and stage times that cover
 // the whole image. With ROICLIP_COCO_OUT set, the COCO file is kept there for check_coco.py.

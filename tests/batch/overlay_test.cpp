@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // renderOverlay(): the caption band above the image, annotations that grow with the image, the
 // excluded tag quads and the named ROIs drawn; the caption's words shared with report.html.
 #include <algorithm>

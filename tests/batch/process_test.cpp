@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // processImage() on the bundled scenes (against the generator's exact ground truth) and on
 // every per-image failure path.
 #include <algorithm>

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: MIT
 """report.html of a real `roiclip run` in headless Chromium (CTest roiclip_batch.report_in_chromium).
 
 Usage: report_in_chromium.py ROICLIP_CLI IMAGES_FOLDER

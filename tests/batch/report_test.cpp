@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // report.html's structure: counts, one table row per image with failures first, the grid of
 // overlays, no IoU where nothing was clipped, nothing fetched from elsewhere.
 #include <regex>

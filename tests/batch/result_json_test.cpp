@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // NAME.json written and read back (the resume path), and the option/outcome texts both ways.
 #include <algorithm>
 #include <fstream>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The region `roiclip run` clips against: the tags are not objects, board ROIs are separate
 // regions whose union is the image's region, repeated ROIs are reported by name, and bad specs
 // are refused before any image is read.

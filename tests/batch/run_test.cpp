@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // roiclip::batch::run(): the bundled images end to end, resumability, interruption, recursion,
 // and every failure path (corrupt file, empty folder, no tags, missing id, unwritable output
 // folder); checkRun(). `roiclip run` itself is tested in tests/apps.

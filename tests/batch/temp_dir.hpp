@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // A fresh folder per test, removed afterwards (the pid keeps concurrent runs of the suite apart).
 #pragma once
 

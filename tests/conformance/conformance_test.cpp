@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The conformance suites of tests/data/conformance as data-driven tests: one parameterised test per
 // suite, one test per (case, operation).
 //

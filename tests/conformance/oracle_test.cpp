@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The oracle (tests/support/oracle.hpp) judges both engines, so it is tested on its own:
 // exactness where doubles fail, winding numbers with both orientations, points on the boundary.
 #include <cmath>

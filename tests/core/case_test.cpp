@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The hand-worked core cases, as data (tests/data/core/cases/<behaviour>.json), run by one
 // parameterised test. A case file holds the operands and the expected results of one or more
 // operations:

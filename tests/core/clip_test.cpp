@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Clipping against the slab integration of the exact winding numbers. The hand-worked degenerate
 // cases (shared vertices, vertices on edges, collinear edges, identical operands, containment, a
 // bow-tie clip, disjoint operands, per-operand fill rules) are data: tests/data/core/cases/, run

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Clipper 1 (libpolyclipping) as an independent oracle: on random self-intersecting inputs the
 // areas of simplify() and clip() agree with Clipper's for every fill rule and operation, within
 // the error Clipper makes by rounding crossing points to its integer grid.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The JSON test data of tests/data/core: listing a folder's files, naming a test after its file,
 // and reading paths ([[[x, y], ...], ...], one array per ring).
 #pragma once

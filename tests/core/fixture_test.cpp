@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Replays every fixture in tests/data/core/ (failures found by random tests, cases where other
 // engines fail) and tests/data/core_bugs/ (reproducers reported from other layers) against the
 // independent oracles: exact winding numbers at sample points, slab-integrated area, and ring

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Inputs at the limits of the core, built so that their vertex and crossing counts and their
 // areas are known in closed form (nothing here calls roiclip). Shared by tests/core/limits_test
 // (scaled down, with assertions) and bench/limits (full size, with time and memory figures).

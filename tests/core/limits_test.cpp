@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The core at its limits, scaled down to keep the suite fast (bench/limits runs the full sizes
 // with time and memory figures): degenerate and invalid operands of clip() (simplify()'s are in
 // stages/input_test.cpp), deep nesting through clip, long pixel contours and many crossings, each

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Open polylines clipped to a region: hand-worked cases, a property test against exact winding
 // numbers at sample points, and Boost.Geometry as an independent library on valid regions.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // PolygonSet operands of clip() and its shorthands: the same result as clipping the set's rings
 // under kPolygonSetFillRule, and the region the exact winding numbers of those rings give.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Property tests with fixed seeds: for random self-intersecting inputs, every fill rule and every
 // operation, the result agrees with the exact winding numbers of the inputs at sample points,
 // its rings are simple, oriented and nested, and the area identities hold.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // simplify() cases computed in code (the pentagram's corners and its inner pentagon's area) and
 // the names of fill rules and operations. The hand-worked cases with literal coordinates (bow-tie,
 // figure-eight, a square wound twice, touching rings, collinear overlaps, spikes, duplicate

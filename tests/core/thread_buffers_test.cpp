@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The pipeline keeps its large working arrays per thread between calls (pipeline.hpp,
 // recycle()). Nothing of one call may leak into the next: results must be the same whatever
 // ran before on the thread (larger, smaller, failed calls) and with several threads at once.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // <roiclip/version.hpp> is generated from the CMake project version (cmake/version.hpp.in).
 #include <roiclip/version.hpp>
 

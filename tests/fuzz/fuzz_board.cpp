@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // libFuzzer target: the roiclip::apriltag readers. The first line of the input is a ROI spec
 // (parseRoiSpec, and parseTagAnchor on its text), the rest a board file (Board::fromJson). The
 // ROI the spec describes is then built from a fixed set of synthetic detections (tags 0-3

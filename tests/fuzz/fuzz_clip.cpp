@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // libFuzzer target: roiclip::clip on two small path sets, checked against the exact winding
 // numbers of both operands combined by the operation (tests/support/oracle.hpp).
 //

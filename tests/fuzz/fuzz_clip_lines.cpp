@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // libFuzzer target: roiclip::clipLines, both parts, checked against the exact winding numbers of
 // the region at points sampled along the input lines (tests/support/oracle.hpp).
 //

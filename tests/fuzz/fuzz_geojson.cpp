@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // libFuzzer target: the roiclip::io readers (parsePaths, parseFeatures, the WKT readers) on the
 // bytes as text.
 // Only roiclip::Error may escape them. Whatever parses is also simplified (when small) and the

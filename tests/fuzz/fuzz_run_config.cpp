@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // libFuzzer target: the `roiclip run --config FILE` reader (roiclip::app::ConfigJson) on the
 // bytes, then CLI11's config path with it as `roiclip` sets it up (RunCommand: the items go to
 // `run`'s options, through their checks and the library's parsers: parseContourMethod,

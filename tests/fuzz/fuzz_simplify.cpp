@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // libFuzzer target: roiclip::simplify on small path sets, checked against the exact winding
 // number of the input (tests/support/oracle.hpp).
 //

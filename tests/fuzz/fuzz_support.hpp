@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Shared pieces of the libFuzzer targets in tests/fuzz: failing loudly, the exception policy,
 // decoding bytes into small path sets, and the check of a result against the independent
 // oracles of tests/support/oracle.hpp.

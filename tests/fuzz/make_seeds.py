@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """Writes the hand-made seed inputs of the fuzz targets (docs/fuzzing.md) into
 OUT/<target>/seed-<name>. The byte encodings of fuzz_simplify and fuzz_clip are those described
 at the top of fuzz_simplify.cpp and fuzz_clip.cpp; the readers get the JSON files the reader

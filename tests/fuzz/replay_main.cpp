@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Corpus replay without libFuzzer: runs every file of the given folders (or the given files)
 // through LLVMFuzzerTestOneInput, in name order. A bug in a target aborts the process, so the
 // CTest test fails and the last "replay:" line names the input. A folder that is missing or

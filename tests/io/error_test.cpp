@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // roiclip::InvalidInputError as a structured error: the core's throw sites fill in the fields
 // (operand, path, vertex, axis), what() is formatted from them, and roiclip::io sets the source.
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The roiclip::io tests' check of an error: an InvalidInputError whose one-line message holds
 // every fragment given.
 #pragma once

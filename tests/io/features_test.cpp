@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // roiclip::io features: ids and properties kept through reading, the feature-wise operations and
 // writing; ring orientation; format detection; the snapping check; warnings for z coordinates.
 #include <unistd.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // roiclip::io WKT: reading (Boost.Geometry's read_wkt, collections, z values, errors), writing,
 // and the round trip read -> clip -> write -> read.
 #include <functional>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Clipping at the OpenCV boundary: contours + hierarchy in, RETR_CCOMP contours out; contour
 // groups (outer contour + holes) clipped one by one, keeping their source index.
 #include <algorithm>

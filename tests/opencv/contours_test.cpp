@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // roiclip::opencv contour detection, image conversion and edge tracing (moved here from the
 // batch pipeline, whose tests still run them end to end).
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Conversions between OpenCV contours and roiclip paths / polygon sets.
 #include <algorithm>
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Vector-vs-raster proof: clip results rasterised exactly must match the raster route (our
 // rasteriser and OpenCV's fillPoly) off a thin band around the operands' edges.
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The exact rasteriser against an independent per-pixel winding-number computation.
 #include <algorithm>
 #include <cmath>

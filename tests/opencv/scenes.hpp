@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Synthetic binary scenes for the OpenCV mask tests, drawn with OpenCV so the contours are real
 // cv::findContours output: blobs with holes, text strokes, 1-px lines, self-touching shapes.
 #pragma once

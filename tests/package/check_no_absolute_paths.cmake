@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # cmake -DDIR=<prefix>/lib/cmake/roiclip -P check_no_absolute_paths.cmake
 # Fails when an installed roiclip CMake file names an absolute include folder or library file of
 # the build machine: consumers must get those from their own find_package() of the dependency.

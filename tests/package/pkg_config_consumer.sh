@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # pkg_config_consumer.sh CXX SOURCE OUT: compile SOURCE against roiclip-core as pkg-config
 # describes it (PKG_CONFIG_PATH names the installed prefix's lib/pkgconfig), then run it.
 set -eu

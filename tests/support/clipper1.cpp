@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "clipper1.hpp"
 
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Clipper 1 (libpolyclipping) for the tests and bench/core: roiclip paths in Clipper's integer
 // units, roiclip's fill rules and operations as Clipper's enums, and the area of a solution
 // with the error bound Clipper's rounding of crossing points implies.

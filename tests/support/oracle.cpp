@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The exact parts of the test oracle (see oracle.hpp), compiled once for every test and fuzz
 // target.
 #include "oracle.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The one test oracle of roiclip (tests/core, tests/conformance, tests/fuzz): exact winding
 // numbers of any double input at sample points, point-in-result of the output, area by vertical
 // slabs, and structural checks of output rings. Nothing here uses the library's own snapping,

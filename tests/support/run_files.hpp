@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Files of a `roiclip run` test, header-only: a bundled scene copied in, the outputs read back
 // (tests/batch and tests/apps). Include as "support/run_files.hpp".
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // roiclip::apriltag: AprilTag detection on cv::Mat images (a wrapper over libapriltag 3.3).
 //
 // Pixel convention: every coordinate this header returns is in OpenCV's convention, (0,0) is the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // roiclip::apriltag: plane-to-image homographies on GLM types (core-facing, no OpenCV types).
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // roiclip::apriltag: regions of interest built from detected AprilTags.
 //
 // Every builder returns roiclip::Paths (image pixels, OpenCV pixel-centre convention, y down)

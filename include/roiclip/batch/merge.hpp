@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // roiclip::batch: `roiclip merge`, several run output folders (shards) into one, as a library
 // function.
 //

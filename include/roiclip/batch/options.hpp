@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // roiclip::batch options and outcome codes: what `roiclip run` can be told (RunOptions, with the
 // one set of defaults), how each enum is spelled in options and output files (both ways, from
 // one table each), and optionsKey().

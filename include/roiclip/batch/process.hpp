@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // roiclip::batch: the per-image pipeline behind `roiclip run` (tags -> ROI -> contours -> exact
 // clip -> mask check), as a library function.
 //

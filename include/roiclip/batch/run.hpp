@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // roiclip::batch: `roiclip run` over a folder of images, as a library function.
 //
 // Output folder layout (every file written atomically: a temporary file in the same folder,

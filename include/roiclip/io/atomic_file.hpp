@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // roiclip::io atomic files: the one writer every roiclip output goes through (GeoJSON, NAME.json,
 // overlays, summaries), its one temporary-name scheme, and the one cleaner for temporaries a
 // killed process left behind.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // roiclip::io features: what every reader gives (GeoJSON, plain paths JSON, WKT) and every writer
 // takes, and the core's operations applied feature by feature so that each feature keeps its
 // `id` and `properties` (as GIS tools expect).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // roiclip::io: reading and writing path sets and open polylines as GeoJSON or plain JSON.
 //
 // Coordinates are taken as they are (no projection): x = first number, y = second number, in the

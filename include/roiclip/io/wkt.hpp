@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // roiclip::io WKT: reading and writing regions and open polylines as OGC Well-Known Text, through
 // Boost.Geometry's read_wkt() and wkt().
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // roiclip::opencv clipping at the OpenCV boundary: cv::findContours output in, contours with a
 // RETR_CCOMP hierarchy (or per-group polygon sets keeping the source contour index) out.
 #pragma once

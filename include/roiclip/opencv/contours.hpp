@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // roiclip::opencv contour detection: an image in, roiclip paths out (each outer contour of
 // cv::findContours with its holes, oriented as roiclip outputs rings), and the image conversions
 // the detection needs.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // roiclip::opencv conversions between OpenCV contours and roiclip paths / polygon sets.
 //
 // Pixel convention (the same as OpenCV and the rest of roiclip): x right, y down, (0,0) is the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // roiclip::opencv open polylines from edge images (for clipLines()).
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // roiclip::opencv mask comparison: the project's proof that vector results match raster masks.
 #pragma once
 

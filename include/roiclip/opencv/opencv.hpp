@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // roiclip::opencv: everything where roiclip meets OpenCV (conversions, clipping contours, exact
 // rasteriser, mask checks, contour detection, edge tracing). Link roiclip::opencv.
 #pragma once

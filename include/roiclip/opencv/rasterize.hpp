@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // roiclip::opencv exact rasteriser: which pixels a set of paths covers under a fill rule.
 #pragma once
 

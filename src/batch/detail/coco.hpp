@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // roiclip::batch internal: the run as one COCO instance-annotation file (BatchOptions::coco;
 // layout and the choices it makes in docs/outputs.md).
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // roiclip::batch internal: which files a run processes (BatchOptions::inputs: folders, image and
 // video files, globs, list files), and the output NAME of each.
 #pragma once

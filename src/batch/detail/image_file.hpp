@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // roiclip::batch internal: reading image files safely. A file's header is read first (format and
 // size, without decoding a pixel), so an image that would not fit the pixel limit, a decompression
 // bomb among them, is refused before anything the size of the image is allocated; then the file

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // roiclip::batch internal: the words the overlay caption and report.html share, so both say the
 // same thing.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // roiclip::batch internal: the per-image pipeline with its core calls counted (for the tests
 // that pin down how often one image runs the core), and the clock of StageTimes.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // roiclip::batch internal: the run's summary files (summary.csv, summary.json, report.html).
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // roiclip::batch internal: report.html, the page a person looks through after a run or a merge.
 // detail/report.hpp declares the run's reportHtml(summary, options); this is the general form.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // roiclip::batch internal: NAME.json (batch::resultToJson() writes it for every image), read
 // back when a run resumes and when the COCO file is made. Both directions spell Status and
 // FailureKind with the tables of options.hpp; docs/outputs.md documents every member.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // roiclip::batch internal: the share of a run's inputs one process takes (BatchOptions::shard).
 #pragma once
 

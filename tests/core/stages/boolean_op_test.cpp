@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The pipeline (src/core/boolean_op.cpp): stages 0 to 4 strung together for every operation, and
 // the choice between the general path and the convex pre-clip.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Stage 2 (src/core/classify.cpp): from the winding numbers below a piece and its contribution,
 // the fill rules and the operation decide whether it bounds the result and on which side.
 #include <gtest/gtest.h>

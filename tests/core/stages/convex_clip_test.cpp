@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The convex pre-clip (src/core/convex_clip.cpp): which rings count as convex, the exact
 // Sutherland-Hodgman step on its own (rings inside pass untouched, rings outside vanish, winding
 // numbers inside are kept), and the fast path giving the same region as the general path for

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Stage 0 (src/core/input.cpp): validation, snapping to the grid, repeats and straight runs
 // dropped, edges emitted with their direction and operand.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Stage 4 (src/core/nesting.cpp): each hole gets its outer ring, each outer ring the hole it lies
 // in, from the piece the sweep found below each ring; output in roiclip's orientation.
 #include <gtest/gtest.h>

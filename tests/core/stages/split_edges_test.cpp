@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Stage 1 (src/core/split_edges.cpp): the sweep cuts edges at every crossing, touch and overlap,
 // merges coincident pieces and labels each kept piece with the winding numbers on its sides.
 #include <gtest/gtest.h>

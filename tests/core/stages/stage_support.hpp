@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Helpers of the stage tests: run stages 0 to 1 on pixel inputs, name arrangement vertices, and
 // find points just below and above a piece.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Stage 3 (src/core/trace_contours.cpp): result pieces linked into simple rings with the paper's
 // stack method, filled side on the left, rings touching at a vertex kept apart.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // roiclip::apriltag through the installed package: a detector finds no tag in a blank image.
 #include <roiclip/apriltag/detector.hpp>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // roiclip::batch through the installed package: a blank image has no tags, so no ROI.
 #include <roiclip/batch/process.hpp>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // roiclip::core through the installed package: intersect two squares.
 #include <roiclip/roiclip.hpp>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // roiclip::io through the installed package: read a square from GeoJSON text.
 #include <roiclip/io/geojson.hpp>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // roiclip::opencv through the installed package: rasterise a 10 x 5 px rectangle.
 #include <roiclip/opencv/rasterize.hpp>
 
