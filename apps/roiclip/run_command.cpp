@@ -254,6 +254,8 @@ RunCommand::RunCommand(CLI::App& app) {
                  "descend into sub-folders (mirrored in output)");
   cmd_->add_flag("-f,--force", options_.force, "reprocess images whose outputs are up to date");
   cmd_->add_flag("--masks", options_.writeMasks, "also write NAME.mask.png");
+  cmd_->add_flag("!--no-overlay", options_.writeOverlays,
+                 "do not write NAME.overlay.png (NAME.json and the summaries only)");
   cmd_->add_flag("--edges", c.openEdges, "also clip Canny edges as open polylines (in NAME.json)");
   cmd_->add_flag_callback(
       "--no-report", [this] { options_.writeReport = false; }, "do not write report.html");

@@ -170,7 +170,7 @@ void writeCounts(std::ostringstream& os, const RunSummary& summary) {
   os << "</p>\n";
 }
 
-void writeRow(std::ostringstream& os, const ImageRecord& r, std::size_t order) {
+void writeRow(std::ostringstream& os, const ImageRecord& r, std::size_t order, bool overlays) {
   const bool ok = r.status == Status::Ok;
   const bool measured = clipped(r);
   const std::optional<double> iou = shownIou(r);
@@ -208,15 +208,17 @@ void writeRow(std::ostringstream& os, const ImageRecord& r, std::size_t order) {
   os << "<td>" << (iou ? fixed(*iou, 4) : kDash) << "</td><td>"
      << (measured ? std::to_string(r.offBandMismatches) : kDash) << "</td><td>"
      << (r.skipped ? std::string("up to date") : fixed(r.seconds, 3)) << "</td><td class=\"text\">";
-  if (r.width > 0) os << "<a href=\"" << name << ".overlay.png\">overlay</a> ";
+  if (r.width > 0 && overlays) os << "<a href=\"" << name << ".overlay.png\">overlay</a> ";
   os << "<a href=\"" << name << ".json\">JSON</a></td></tr>\n";
 }
 
-void writeFigure(std::ostringstream& os, const ImageRecord& r, std::size_t order) {
+void writeFigure(std::ostringstream& os, const ImageRecord& r, std::size_t order, bool overlays) {
   const bool ok = r.status == Status::Ok;
   const std::string name = urlEncode(r.name);
   os << "<figure id=\"img-" << order << "\"" << (ok ? "" : " class=\"bad\"") << ">";
-  if (r.width > 0) {
+  if (r.width > 0 && !overlays) {
+    os << "<div class=\"noimage\">no overlay (--no-overlay)</div>";
+  } else if (r.width > 0) {
     os << "<a href=\"" << name << ".overlay.png\"><img loading=\"lazy\" src=\"" << name
        << ".overlay.png\" alt=\"overlay of " << htmlEscape(r.image) << "\"></a>";
   } else {
@@ -265,9 +267,11 @@ std::string reportHtml(const RunSummary& summary, const ReportPage& page) {
      << "<th data-key=\"iou\"><button type=\"button\">IoU</button></th><th>off-band</th>"
      << "<th data-key=\"time\"><button type=\"button\">s</button></th>"
      << "<th class=\"text\">files</th></tr></thead>\n<tbody>\n";
-  for (std::size_t k = 0; k < order.size(); ++k) writeRow(os, summary.images[order[k]], k);
+  for (std::size_t k = 0; k < order.size(); ++k)
+    writeRow(os, summary.images[order[k]], k, page.overlays);
   os << "</tbody></table></div>\n<h2>Overlays</h2>\n<div class=\"grid\" id=\"overlays\">\n";
-  for (std::size_t k = 0; k < order.size(); ++k) writeFigure(os, summary.images[order[k]], k);
+  for (std::size_t k = 0; k < order.size(); ++k)
+    writeFigure(os, summary.images[order[k]], k, page.overlays);
   os << "</div>\n<script>" << kScript << "</script>\n</body></html>\n";
   return os.str();
 }
@@ -280,6 +284,7 @@ std::string reportHtml(const RunSummary& summary, const BatchOptions& options) {
                    {"ROI", rois},
                    {"contours", toString(options.process.contours.method)},
                    {"fill rule", toString(options.process.subjectFillRule)}}};
+  page.overlays = options.writeOverlays;
   return reportHtml(summary, page);
 }
 

@@ -94,7 +94,8 @@ class Runner {
   std::optional<ImageRecord> upToDate(const OutputFiles& files,
                                       const std::optional<fs::file_time_type>& inputTime) const {
     if (options_.force || !inputTime) return std::nullopt;
-    if (!notOlder(files.json, *inputTime) || !notOlder(files.overlay, *inputTime) ||
+    if (!notOlder(files.json, *inputTime) ||
+        (options_.writeOverlays && !notOlder(files.overlay, *inputTime)) ||
         (options_.writeMasks && !notOlder(files.mask, *inputTime))) {
       return std::nullopt;
     }
@@ -114,7 +115,9 @@ class Runner {
     std::string overlay, mask;
     auto t = Clock::now();
     if (result.width > 0) {
-      overlay = encodePng(renderOverlay(image, result), files.overlay.string());
+      if (options_.writeOverlays) {
+        overlay = encodePng(renderOverlay(image, result), files.overlay.string());
+      }
       if (options_.writeMasks && !result.roi.empty()) {
         mask = encodePng(renderMask(result, options_.process.grid), files.mask.string());
       }
@@ -123,10 +126,10 @@ class Runner {
     t = Clock::now();
     if (!overlay.empty()) {
       writeFileAtomically(files.overlay, overlay);
-      if (!mask.empty()) writeFileAtomically(files.mask, mask);
     } else {
       fs::remove(files.overlay, ec);  // a stale overlay from an earlier run would mislead
     }
+    if (!mask.empty()) writeFileAtomically(files.mask, mask);
     result.seconds.write = secondsSince(t);
     result.seconds.total = readSeconds + secondsSince(start);
     // NAME.json last: its presence with status ok is what marks the image as complete. Its own

@@ -47,6 +47,30 @@ rb::BatchOptions optionsFor(const fs::path& input, const fs::path& output) {
   return o;
 }
 
+TEST(BatchRun, NoOverlayWritesTheRecordsOnlyAndStillResumes) {
+  const TempDir tmp("no_overlay");
+  copyScene("scene_01", tmp.path() / "in" / "scene_01.png");
+  copyScene("scene_02", tmp.path() / "in" / "scene_02.png");
+  rb::BatchOptions o = optionsFor(tmp.path() / "in", tmp.path() / "out");
+  o.writeOverlays = false;
+  const rb::RunSummary first = rb::run(o);
+  ASSERT_TRUE(first.allOk());
+  EXPECT_TRUE(fs::exists(tmp.path() / "out" / "scene_01.json"));
+  EXPECT_FALSE(fs::exists(tmp.path() / "out" / "scene_01.overlay.png"));
+  EXPECT_FALSE(fs::exists(tmp.path() / "out" / "scene_02.overlay.png"));
+  const std::string html = readText(tmp.path() / "out" / "report.html");
+  EXPECT_EQ(html.find(".overlay.png"), std::string::npos);
+  EXPECT_NE(html.find("no overlay (--no-overlay)"), std::string::npos);
+  // Without overlays the JSON alone marks an image as done.
+  const rb::RunSummary again = rb::run(o);
+  EXPECT_EQ(again.skipped, 2u);
+  // Asking for overlays again redoes the images (their overlays are missing).
+  o.writeOverlays = true;
+  const rb::RunSummary withOverlays = rb::run(o);
+  EXPECT_EQ(withOverlays.skipped, 0u);
+  EXPECT_TRUE(fs::exists(tmp.path() / "out" / "scene_01.overlay.png"));
+}
+
 TEST(BatchRun, BundledImagesEndToEnd) {
   const TempDir tmp("bundled");
   rb::BatchOptions options = optionsFor(kImages, tmp.path() / "out");

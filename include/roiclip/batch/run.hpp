@@ -71,6 +71,7 @@ struct BatchOptions {
   bool recursive = false;        ///< descend into sub-folders (symlinked folders are not followed)
   bool force = false;            ///< reprocess images whose outputs are complete and up to date
   bool writeMasks = false;       ///< also write NAME.mask.png
+  bool writeOverlays = true;     ///< write NAME.overlay.png (false: the JSON and summaries only)
   bool writeReport = true;       ///< write report.html
   /// When not empty: also write the whole run as one COCO instance-annotation file here
   /// (docs/outputs.md), atomically, after the summary.

@@ -16,6 +16,7 @@ struct ReportPage {
   std::string title;  ///< "roiclip run", "roiclip merge"
   /// Label and value pairs shown in a line under the title ("input", "images"), in this order.
   std::vector<std::pair<std::string, std::string>> facts;
+  bool overlays = true;  ///< NAME.overlay.png files exist (false after `--no-overlay`)
 };
 
 /// report.html for `summary`: the counts, one table row per image (failures first, then input
