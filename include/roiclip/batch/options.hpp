@@ -30,7 +30,7 @@ constexpr std::int64_t kDefaultMaxPixels = 100'000'000;
 /// Everything the per-image pipeline needs. Options are plain values so a config file can hold
 /// them; the member initialisers are the defaults of the library and of `roiclip run`.
 struct RunOptions {
-  apriltag::DetectorOptions detector;
+  apriltag::DetectorOptions detector;  ///< AprilTag detection (family, decimation, doubtful tags)
   /// ROI specs as parsed by apriltag::parseRoiSpec: "hull" (default: convex hull of all detected
   /// tags), "hull:0,2,5", "tags:0,1,2,3[@anchor]", "board[:name]", "tag:ID:x,y;x,y;...". Each
   /// spec is one named region ("board" without a name gives one per board ROI); the image's
@@ -42,11 +42,11 @@ struct RunOptions {
   /// (its black border), each grown outwards by tagMargin px (>= 0) to take in the white margin
   /// and blur. keepTags keeps the tags in the region (the behaviour before 0.2).
   double tagMargin = 0.0;
-  bool keepTags = false;
-  ContourOptions contours;
+  bool keepTags = false;    ///< keep the tags in the region (see tagMargin)
+  ContourOptions contours;  ///< how contours are found (method, polarity, minimum area, ...)
   FillRule subjectFillRule = FillRule::EvenOdd;  ///< for the contours (as cv::fillPoly draws)
   FillRule roiFillRule = FillRule::EvenOdd;      ///< for the ROI paths
-  Grid grid{};
+  Grid grid{};  ///< the core's coordinate grid for every clip of the image
   /// Images with more pixels (width x height) are refused (FailureKind::TooLarge); run() checks
   /// the file's header before decoding. <= 0: no limit. Not part of optionsKey(): it guards
   /// decoding and changes no result, so up-to-date outputs stay up to date.

@@ -32,11 +32,11 @@ namespace roiclip::batch {
 
 /// One clipped contour: an outer contour from cv::findContours with its holes (RETR_CCOMP).
 struct ContourResult {
-  int contourIndex = -1;  ///< index of the outer contour in cv::findContours' output
-  Paths input;            ///< outer ring + holes, oriented like roiclip output
-  double inputArea = 0;   ///< area of `input` under the subject fill rule (px^2)
-  PolygonSet clipped;     ///< input AND ROI
-  double clippedArea = 0;
+  int contourIndex = -1;   ///< index of the outer contour in cv::findContours' output
+  Paths input;             ///< outer ring + holes, oriented like roiclip output
+  double inputArea = 0;    ///< area of `input` under the subject fill rule (px^2)
+  PolygonSet clipped;      ///< input AND ROI
+  double clippedArea = 0;  ///< area of `clipped` (px^2)
   /// Indices into ImageResult::rois of the named ROIs this contour has a part inside.
   std::vector<int> rois;
 };
@@ -69,11 +69,12 @@ struct StageTimes {
 
 /// Everything processImage() found; filled as far as the pipeline got.
 struct ImageResult {
-  Status status = Status::Failed;
-  FailureKind failure = FailureKind::Internal;
-  std::string reason;  ///< empty when Ok; one line otherwise
-  int width = 0, height = 0;
-  std::vector<apriltag::Detection> tags;
+  Status status = Status::Failed;               ///< the image's outcome
+  FailureKind failure = FailureKind::Internal;  ///< why it is not Ok (None when it is)
+  std::string reason;                           ///< empty when Ok; one line otherwise
+  int width = 0;                                ///< image width, px (0 when not read)
+  int height = 0;                               ///< image height, px
+  std::vector<apriltag::Detection> tags;        ///< accepted detections, sorted by id
   /// Detections dropped as doubtful (DetectorOptions::maxHamming, minDecisionMargin).
   std::vector<apriltag::Detection> rejectedTags;
   float quadDecimate = 1.0f;                         ///< the AprilTag decimation that found `tags`
@@ -92,18 +93,18 @@ struct ImageResult {
   int holesIn = 0;                      ///< holes of the kept contours
   PolygonSet clipped;                   ///< all contours together AND ROI (one clip; the mask
                                         ///< check checks it; polygon parents link across contours)
-  double clippedArea = 0;
+  double clippedArea = 0;               ///< area of `clipped`, px^2
   /// Sum of the per-contour clipped areas; equals clippedArea (contours never overlap) up to
   /// rounding of output vertices; kept as a consistency figure.
   double contourClippedAreaSum = 0;
   /// With ContourOptions::openEdges: the parts of the Canny edge polylines inside the ROI
   /// (ROI read under roiFillRule), and their total length in px.
   std::vector<Path> edges;
-  double edgeLength = 0;
+  double edgeLength = 0;                                 ///< total length of `edges`, px
   int edgesIn = 0;                                       ///< polylines traced before clipping
   opencv::MaskComparison vectorVsRaster;                 ///< exact raster route
   std::optional<opencv::MaskComparison> vectorVsOpenCv;  ///< cv::fillPoly route (even-odd only)
-  StageTimes seconds;
+  StageTimes seconds;                                    ///< time spent in each stage
 
   /// Off-band mismatching pixels over all comparisons made.
   [[nodiscard]] std::int64_t offBandMismatches() const;
@@ -117,8 +118,8 @@ class Processor {
   ///         a board file, or bad detector options.
   explicit Processor(RunOptions options);
   ~Processor();
-  Processor(Processor&&) noexcept;
-  Processor& operator=(Processor&&) noexcept;
+  Processor(Processor&&) noexcept;             ///< a moved-from Processor may only be destroyed
+  Processor& operator=(Processor&&) noexcept;  ///< as the move constructor
 
   /// Run the pipeline on one image (any type opencv::toGray8 accepts; the overlay uses it as is).
   /// Never throws for per-image problems: an empty, unsupported or too large image gives
@@ -134,6 +135,7 @@ class Processor {
   /// @param image receives the decoded image (empty when unreadable), e.g. for renderOverlay().
   [[nodiscard]] ImageResult processFile(const std::string& file, cv::Mat* image = nullptr) const;
 
+  /// The options this Processor was made with.
   [[nodiscard]] const RunOptions& options() const;
 
  private:

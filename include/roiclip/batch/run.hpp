@@ -82,10 +82,10 @@ struct BatchOptions {
 
 /// The figures of one named ROI of an image (RoiRegion).
 struct RoiRecord {
-  std::string name;
-  double roiArea = 0;
-  int contoursOut = 0;
-  double clippedArea = 0;
+  std::string name;        ///< RoiRegion::name
+  double roiArea = 0;      ///< area of the ROI minus the excluded tags, px^2
+  int contoursOut = 0;     ///< contours with a part inside it
+  double clippedArea = 0;  ///< area of the contours' parts inside it, px^2
 };
 
 /// One image of the summary (summary.csv has one row per image and ROI).
@@ -93,17 +93,19 @@ struct ImageRecord {
   std::string image;  ///< relative path ('/' separated; see above); for a frame, the video's
   std::string name;   ///< output NAME (relative to the output folder)
   int frame = -1;     ///< a video's frame index (0-based); -1 for an image
-  Status status = Status::Failed;
-  FailureKind failure = FailureKind::Internal;
-  std::string reason;
-  bool skipped = false;  ///< outputs were up to date; figures read back from NAME.json
-  int width = 0, height = 0;
-  int tagsFound = 0;
+  Status status = Status::Failed;               ///< the image's outcome
+  FailureKind failure = FailureKind::Internal;  ///< why it is not Ok (None when it is)
+  std::string reason;                           ///< one line when not Ok; empty otherwise
+  bool skipped = false;         ///< outputs were up to date; figures read back from NAME.json
+  int width = 0;                ///< image width, px (0 when it could not be read)
+  int height = 0;               ///< image height, px
+  int tagsFound = 0;            ///< accepted tag detections
   int tagsRejected = 0;         ///< doubtful detections dropped (DetectorOptions::maxHamming, ...)
   std::vector<RoiRecord> rois;  ///< per named ROI; the figures below are for their union
-  double roiArea = 0;
-  int contoursIn = 0, contoursOut = 0;
-  double clippedArea = 0;
+  double roiArea = 0;           ///< area of the region (all ROIs minus the tags), px^2
+  int contoursIn = 0;           ///< outer contours detected and kept
+  int contoursOut = 0;          ///< of those, how many have a part inside the region
+  double clippedArea = 0;       ///< area of the contours' parts inside the region, px^2
   /// Exact raster route; nothing when the mask check did not run (failed and no-roi images).
   std::optional<double> iou;
   std::int64_t offBandMismatches = 0;  ///< over all comparisons
@@ -118,9 +120,9 @@ struct ImageRecord {
 /// frame count its container states (CAP_PROP_FRAME_COUNT, divided by BatchOptions::every),
 /// and a finished one by the frames it had.
 struct Progress {
-  std::size_t done = 0;  ///< images finished (processed, skipped or failed)
-  std::size_t total = 0;
-  std::size_t skipped = 0;
+  std::size_t done = 0;               ///< images finished (processed, skipped or failed)
+  std::size_t total = 0;              ///< images expected (see above)
+  std::size_t skipped = 0;            ///< of `done`, how many were up to date
   std::size_t failed = 0;             ///< status other than Ok
   double elapsed = 0;                 ///< seconds since the run started
   const ImageRecord* last = nullptr;  ///< the image just finished
@@ -131,9 +133,13 @@ using ProgressCallback = std::function<void(const Progress&)>;
 struct RunSummary {
   std::vector<ImageRecord> images;  ///< in input order; only images finished when interrupted
   std::size_t total = 0;            ///< images found (in this shard; a video's frames each)
-  std::size_t ok = 0, noRoi = 0, failed = 0, mismatched = 0, skipped = 0;
-  bool interrupted = false;
-  double seconds = 0;
+  std::size_t ok = 0;               ///< images with Status::Ok
+  std::size_t noRoi = 0;            ///< images with Status::NoRoi
+  std::size_t failed = 0;           ///< images with Status::Failed
+  std::size_t mismatched = 0;       ///< images with Status::MaskMismatch
+  std::size_t skipped = 0;          ///< images whose outputs were up to date
+  bool interrupted = false;         ///< the run was cancelled before every image was done
+  double seconds = 0;               ///< wall time of the run
   /// True when every finished image is Ok and the run was not interrupted.
   [[nodiscard]] bool allOk() const {
     return !interrupted && ok == images.size() && images.size() == total;
