@@ -12,6 +12,7 @@
 #include <set>
 
 #include <roiclip/error.hpp>
+#include <roiclip/io/atomic_file.hpp>
 
 namespace roiclip::batch::detail {
 
@@ -274,6 +275,15 @@ std::vector<Job> listJobs(const std::vector<fs::path>& inputs, const fs::path& o
     for (int k = 2; !taken.insert(j.name).second; ++k) j.name = base + "~" + std::to_string(k);
   }
   return jobs;
+}
+
+void prepareOutputFolder(const fs::path& output) {
+  std::error_code ec;
+  fs::create_directories(output, ec);
+  if (ec || !fs::is_directory(output)) {
+    throw Error("cannot create output folder " + output.string() + (ec ? ": " + ec.message() : ""));
+  }
+  io::removeStaleTemporaries(output);
 }
 
 }  // namespace roiclip::batch::detail

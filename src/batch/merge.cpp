@@ -197,13 +197,7 @@ RunSummary merge(const MergeOptions& options) {
     return fs::path(a.record.image) < fs::path(b.record.image);
   });
 
-  std::error_code ec;
-  fs::create_directories(options.output, ec);
-  if (ec || !fs::is_directory(options.output)) {
-    throw Error("cannot create output folder " + options.output.string() +
-                (ec ? ": " + ec.message() : ""));
-  }
-  io::removeStaleTemporaries(options.output);
+  detail::prepareOutputFolder(options.output);
 
   RunSummary summary;
   std::string input = shards.front().summary.value("input", std::string());

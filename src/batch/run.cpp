@@ -412,14 +412,7 @@ std::size_t checkRun(const BatchOptions& options) {
 RunSummary run(const BatchOptions& options, const ProgressCallback& progress,
                const std::atomic<bool>* cancel) {
   std::vector<Job> jobs = listJobs(options);
-  std::error_code ec;
-  fs::create_directories(options.output, ec);
-  if (ec || !fs::is_directory(options.output)) {
-    throw Error("cannot create output folder " + options.output.string() +
-                (ec ? ": " + ec.message() : ""));
-  }
-  // A run killed hard (second Ctrl-C, SIGKILL) can leave hidden temporaries; never final files.
-  io::removeStaleTemporaries(options.output);
+  detail::prepareOutputFolder(options.output);
 
   Runner runner(options, std::move(jobs));
   RunSummary summary = runner.run(progress, cancel);

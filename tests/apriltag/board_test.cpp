@@ -337,7 +337,8 @@ TEST(AprilTagRoiSpec, BuildsTheSameAsTheBuilders) {
   EXPECT_EQ(corners[0], (roiclip::Path{detections[0].corner(ra::Corner::TopLeft),
                                        detections[1].corner(ra::Corner::BottomRight),
                                        detections[2].corner(ra::Corner::TopRight)}));
-  EXPECT_THROW((void)ra::polygonThroughTags(detections, {0, 1, 2}, std::vector<ra::TagAnchor>{ra::TagAnchor::TopLeft}),
+  EXPECT_THROW((void)ra::polygonThroughTags(detections, {0, 1, 2},
+                                            std::vector<ra::TagAnchor>{ra::TagAnchor::TopLeft}),
                roiclip::InvalidInputError);
 }
 

@@ -61,4 +61,9 @@ struct Job {
 std::vector<Job> listJobs(const std::vector<std::filesystem::path>& inputs,
                           const std::filesystem::path& output, bool recursive);
 
+/// Create the output folder (and its parents) and remove the hidden temporaries a run killed
+/// hard (second Ctrl-C, SIGKILL) left there; never final files.
+/// @throws Error naming the folder when it cannot be created.
+void prepareOutputFolder(const std::filesystem::path& output);
+
 }  // namespace roiclip::batch::detail
