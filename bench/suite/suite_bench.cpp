@@ -14,7 +14,7 @@
 // Flags:
 //   --filter=REGEX      rows whose name matches (std::regex_search); --list prints the names
 //   --libs=a,b          libraries: roiclip,clipper,boost,geos,raster (roiclip always runs)
-//   --reps=N            repetitions (samples per library), default 5
+//   --reps=N            repetitions (samples per library), default 7
 //   --min_time=S        seconds per sample, default 0.02 (--benchmark_min_time=S is the same)
 //   --json=FILE         also write every sample as JSON
 //   --dump_dir=DIR      write the first call of a row on which a library disagrees to DIR
@@ -315,6 +315,13 @@ std::string unsupported(Library lib, const Row& row) {
   if (lib == Library::Raster && row.rule != FillRule::EvenOdd) {
     return "cv::fillPoly has no non-zero rule";
   }
+  if (lib == Library::Boost || lib == Library::Geos) {
+    for (const Job& job : row.jobs) {
+      for (const Contour& c : job.subject) {
+        if (c.size() < 3) return "invalid input: contours of 1 or 2 points";
+      }
+    }
+  }
   if (lib == Library::Boost) {
     for (const Job& job : row.jobs) {
       std::string why;
@@ -354,7 +361,7 @@ double threadSeconds() {
 struct Options {
   std::string filter = ".";
   std::vector<Library> libraries{std::begin(kLibraries), std::end(kLibraries)};
-  int reps = 5;
+  int reps = 7;
   double minTime = 0.02;
   std::string jsonFile;
   std::string dumpDir;
