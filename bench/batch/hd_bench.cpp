@@ -6,7 +6,8 @@
 // Rows:
 //   Hd/before: the settings of 0.1 (AprilTag quads at full resolution, the tags kept in the
 //              region) through today's pipeline;
-//   Hd/defaults: today's defaults (automatic decimation: 2 at 1080p, tags excluded).
+//   Hd/defaults: today's defaults (automatic decimation: 4 at 1080p, finer passes when needed,
+//                tags excluded).
 // Counters: images/s (per core), the per-stage milliseconds per image (ImageResult::seconds),
 // tags found over all images, and the largest tag corner error against the generator's ground
 // truth (px). Decoding is not included (the images are in memory): see bench/batch/README.md

@@ -190,7 +190,7 @@ class Detector:
     def __init__(
         self,
         family: str = "tag36h11",
-        quad_decimate: float = 1.0,
+        quad_decimate: float = 0.0,
         quad_sigma: float = 0.0,
         refine_edges: bool = True,
         threads: int = 1,
@@ -205,7 +205,7 @@ class Detector:
 def detect_tags(
     image: np.ndarray,
     family: str = "tag36h11",
-    quad_decimate: float = 1.0,
+    quad_decimate: float = 0.0,
     quad_sigma: float = 0.0,
     refine_edges: bool = True,
     threads: int = 1,

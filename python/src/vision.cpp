@@ -87,13 +87,14 @@ py::list detect(const Detector& detector, const py::handle& image) {
 
 // Detector options as keyword arguments, shared by Detector() and detect_tags().
 #define ROICLIP_DETECTOR_ARGS                                                                    \
-  py::arg("family") = "tag36h11", py::arg("quad_decimate") = 1.0f, py::arg("quad_sigma") = 0.0f, \
+  py::arg("family") = "tag36h11", py::arg("quad_decimate") = 0.0f, py::arg("quad_sigma") = 0.0f, \
   py::arg("refine_edges") = true, py::arg("threads") = 1, py::arg("decode_sharpening") = 0.25,   \
   py::arg("max_bits_corrected") = 2
 
 constexpr const char* kDetectorArgs =
     "family: tag family (see available_families()); quad_decimate: detect quads on an image "
-    "decimated by this factor (>= 1); quad_sigma: Gaussian blur of the quad image (0 off); "
+    "decimated by this factor (>= 1), or 0 (the default) for automatic decimation, coarse to "
+    "fine as in roiclip run; quad_sigma: Gaussian blur of the quad image (0 off); "
     "refine_edges: snap quad edges to strong gradients; threads: libapriltag worker threads; "
     "decode_sharpening: payload sharpening; max_bits_corrected: bit errors the decoder may "
     "correct (0..3). Raises InvalidInputError for an unknown family or out-of-range options.";

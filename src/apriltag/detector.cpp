@@ -149,11 +149,23 @@ constexpr double kAprilTagToOpenCv = -0.5;
 
 }  // namespace
 
+namespace {
+constexpr float kDecimateSteps[] = {1.5f, 2, 3, 4, 5, 6, 8, 10, 12, 16};
+
+// The factor of the pass after one at `factor`: the largest step at most half of it, or 1.
+float finerDecimate(float factor) {
+  float chosen = 1.0f;
+  for (float step : kDecimateSteps) {
+    if (step <= factor / 2) chosen = step;
+  }
+  return chosen;
+}
+}  // namespace
+
 float autoQuadDecimate(int width, int height) {
-  constexpr float kSteps[] = {1.5f, 2, 3, 4, 5, 6, 8, 10, 12, 16};
   float chosen = 1.0f;
   const double pixels = static_cast<double>(std::max(width, 0)) * std::max(height, 0);
-  for (float step : kSteps) {
+  for (float step : kDecimateSteps) {
     if (pixels / (static_cast<double>(step) * step) < kAutoDecimatePixels) break;
     chosen = step;
   }
@@ -295,7 +307,8 @@ std::vector<Detection> Detector::detect(cv::InputArray input) const {
   return detectReport(input).tags;
 }
 
-DetectionReport Detector::detectReport(cv::InputArray input, float quadDecimate) const {
+DetectionReport Detector::detectReport(cv::InputArray input, float quadDecimate,
+                                       const std::vector<int>& expectedIds) const {
   if (!impl_) throw Error("roiclip::apriltag::Detector used after it was moved from");
   if (!std::isfinite(quadDecimate) || !(quadDecimate == 0.0f || quadDecimate >= 1.0f)) {
     throw InvalidInputError("AprilTag detect: quadDecimate must be 0 or >= 1, got " +
@@ -316,19 +329,30 @@ DetectionReport Detector::detectReport(cv::InputArray input, float quadDecimate)
                                ? impl_->options.quadDecimate
                                : autoQuadDecimate(image.cols, image.rows);
   DetectionReport report = impl_->detectAt(image, decimateBy);
-  if (automatic && decimateBy > 1.0f) {
-    // Small tags may be lost on the decimated image: when none was found, or the smallest found
-    // is near the size where quads stop being found, look again at full resolution.
+  if (!automatic) return report;
+  // Coarse to fine: small tags may be lost on the decimated image. Look again, finer, when a
+  // pass found none, found one near the size where quads stop being found, or missed an id the
+  // caller expects.
+  const auto wantsFiner = [&](const DetectionReport& r) {
+    if (r.tags.empty()) return true;
     double smallest = std::numeric_limits<double>::infinity();
-    for (const Detection& d : report.tags) {
+    for (const Detection& d : r.tags) {
       for (int k = 0; k < 4; ++k) {
         smallest = std::min(smallest, glm::length(d.corners[(k + 1) % 4] - d.corners[k]));
       }
     }
-    if (report.tags.empty() || smallest / decimateBy < kAutoDecimateMinTagSide) {
-      report = impl_->detectAt(image, 1.0f);
-    }
+    if (smallest / r.quadDecimate < kAutoDecimateMinTagSide) return true;
+    return std::any_of(expectedIds.begin(), expectedIds.end(), [&](int id) {
+      return std::none_of(r.tags.begin(), r.tags.end(),
+                          [id](const Detection& d) { return d.id == id; });
+    });
+  };
+  int passes = 1;
+  while (report.quadDecimate > 1.0f && wantsFiner(report)) {
+    report = impl_->detectAt(image, finerDecimate(report.quadDecimate));
+    ++passes;
   }
+  report.passes = passes;
   return report;
 }
 

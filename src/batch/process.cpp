@@ -3,12 +3,13 @@
 //
 // The region: every ROI spec built from the tags and simplified under the ROI fill rule (one
 // simplify each), their union when there are several (one more), minus the tag quads (one
-// difference, unless tags are kept). Then per contour with N contours kept: one simplify (its
-// input area under the fill rule, which self-intersecting approxPolyDP contours need) and one
-// clip (its part inside the region), and one clip of all contours together
-// (ImageResult::clipped, whose polygon parents link an island to the hole of another contour it
-// lies in; concatenating the per-contour results would lose that), checked by the mask check
-// without clipping again. One ROI: 2N + 3 calls (2N + 2 with tags kept), plus one clipLines with
+// difference, unless tags are kept). Then per contour with N contours kept: one clip (its part
+// inside the region), and one clip of all contours together (ImageResult::clipped, whose polygon
+// parents link an island to the hole of another contour it lies in; concatenating the
+// per-contour results would lose that), checked by the mask check without clipping again. A
+// contour's input area is its shoelace sum (opencv::pixelContourArea: findContours rings never
+// cross); with approxEpsilon > 0 it takes one simplify, since approxPolyDP contours may. One ROI:
+// N + 3 calls (N + 2 with tags kept; 2N + 3 with approxEpsilon), plus one clipLines with
 // openEdges; with R > 1 ROIs, R + 2 for the region and R more per contour inside it (per-ROI
 // figures).
 #include <roiclip/batch/process.hpp>
@@ -135,6 +136,14 @@ class Pipeline {
     }
     specs_ = expandSpecs(options_.rois, board_);
     for (const auto& spec : specs_) checkIds(spec, options_.detector);
+    // The ids a spec cannot do without: automatic decimation looks again, finer, when one is
+    // missing. A board fits any subset of its tags, so its ids are not required.
+    for (const auto& [name, spec] : specs_) {
+      if (spec.kind == apriltag::RoiSpec::Kind::Board) continue;
+      expectedIds_.insert(expectedIds_.end(), spec.ids.begin(), spec.ids.end());
+    }
+    std::sort(expectedIds_.begin(), expectedIds_.end());
+    expectedIds_.erase(std::unique(expectedIds_.begin(), expectedIds_.end()), expectedIds_.end());
   }
 
   [[nodiscard]] const RunOptions& options() const { return options_; }
@@ -169,10 +178,11 @@ class Pipeline {
 
   void detectTags(const cv::Mat& gray, ImageResult& r) const {
     const auto t = Clock::now();
-    apriltag::DetectionReport found = detector_.detectReport(gray);
+    apriltag::DetectionReport found = detector_.detectReport(gray, 0, expectedIds_);
     r.tags = std::move(found.tags);
     r.rejectedTags = std::move(found.rejected);
     r.quadDecimate = found.quadDecimate;
+    r.detectPasses = found.passes;
     r.seconds.detect += secondsSince(t);
   }
 
@@ -273,8 +283,12 @@ class Pipeline {
       ContourResult c;
       c.contourIndex = group.index;
       c.input = group.rings;
-      ++calls.simplify;
-      c.inputArea = simplify(c.input, rule, options_.grid).area();
+      if (options_.contours.approxEpsilon > 0) {  // approxPolyDP output may cross itself
+        ++calls.simplify;
+        c.inputArea = simplify(c.input, rule, options_.grid).area();
+      } else {
+        c.inputArea = opencv::pixelContourArea(group);
+      }
       ++calls.clip;
       c.clipped =
           clip(ClipOp::Intersection, c.input, r.roi, rule, FillRule::EvenOdd, options_.grid);
@@ -353,6 +367,7 @@ class Pipeline {
   apriltag::Detector detector_;
   std::optional<apriltag::Board> board_;
   std::vector<std::pair<std::string, apriltag::RoiSpec>> specs_;  // name, spec
+  std::vector<int> expectedIds_;  // ids the specs need, sorted (detectTags)
 };
 
 // Pipeline::run with per-image problems turned into Status::Failed.

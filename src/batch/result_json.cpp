@@ -324,6 +324,7 @@ std::string resultToJson(const ImageResult& r, const std::string& imageName,
   j["tags"] = detail::tagsJson(r.tags);
   j["rejected_tags"] = detail::tagsJson(r.rejectedTags);
   j["quad_decimate"] = r.quadDecimate;
+  j["detect_passes"] = r.detectPasses;
   if (r.missingTags) {
     j["missing_tags"] = {{"needed", r.missingTags->needed},
                          {"seen", r.missingTags->seen},

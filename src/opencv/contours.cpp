@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <utility>
 
 #include <opencv2/imgproc.hpp>
@@ -135,6 +136,20 @@ std::vector<ContourGroup> detectContours(cv::InputArray input, const ContourOpti
     groups.erase(std::remove_if(groups.begin(), groups.end(), tooSmall), groups.end());
   }
   return groups;
+}
+
+double pixelContourArea(const ContourGroup& group) {
+  // Twice the shoelace sum over all rings, in integers (the points are cv::Point coordinates).
+  __int128 twice = 0;
+  for (const Path& ring : group.rings) {
+    for (std::size_t i = 0, n = ring.size(); i < n; ++i) {
+      const Point& a = ring[i];
+      const Point& b = ring[(i + 1) % n];
+      twice += __int128(std::int64_t(a.x)) * std::int64_t(b.y) -
+               __int128(std::int64_t(b.x)) * std::int64_t(a.y);
+    }
+  }
+  return 0.5 * std::fabs(static_cast<double>(twice));
 }
 
 }  // namespace roiclip::opencv

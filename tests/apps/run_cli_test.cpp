@@ -241,9 +241,12 @@ TEST_F(RunCli, DetectorOptions) {
   const Json j = readJson(dir_ / "out" / "a.json");
   EXPECT_EQ(j["tags"].size(), 4u);
   EXPECT_EQ(j["quad_decimate"].get<double>(), 2.0);
-  // The automatic decimation (the default) needs none for a 640 x 480 image.
+  EXPECT_EQ(j["detect_passes"].get<int>(), 1);
+  // The automatic decimation (the default) is 1.5 for a 640 x 480 image.
   ASSERT_EQ(runIn("--force").exitCode, 0);
-  EXPECT_EQ(readJson(dir_ / "out" / "a.json")["quad_decimate"].get<double>(), 1.0);
+  const Json automatic = readJson(dir_ / "out" / "a.json");
+  EXPECT_EQ(automatic["quad_decimate"].get<double>(), 1.5);
+  EXPECT_EQ(automatic["detect_passes"].get<int>(), 1);
 }
 
 TEST_F(RunCli, Version) {

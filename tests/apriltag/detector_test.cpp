@@ -499,22 +499,106 @@ TEST(AprilTagDetectorErrors, BadOptions) {
 }
 
 TEST(AprilTagDetector, AutomaticDecimationFollowsTheImageSize) {
-  EXPECT_EQ(ra::autoQuadDecimate(640, 480), 1.0f);
-  EXPECT_EQ(ra::autoQuadDecimate(1000, 700), 1.0f);
-  EXPECT_EQ(ra::autoQuadDecimate(1280, 960), 1.5f);
-  EXPECT_EQ(ra::autoQuadDecimate(1920, 1080), 2.0f);
-  EXPECT_EQ(ra::autoQuadDecimate(3840, 2160), 4.0f);
-  EXPECT_EQ(ra::autoQuadDecimate(8000, 6000), 8.0f);
+  EXPECT_EQ(ra::autoQuadDecimate(320, 240), 1.0f);
+  EXPECT_EQ(ra::autoQuadDecimate(640, 480), 1.5f);
+  EXPECT_EQ(ra::autoQuadDecimate(800, 600), 2.0f);
+  EXPECT_EQ(ra::autoQuadDecimate(1280, 960), 3.0f);
+  EXPECT_EQ(ra::autoQuadDecimate(1920, 1080), 4.0f);
+  EXPECT_EQ(ra::autoQuadDecimate(3840, 2160), 8.0f);
+  EXPECT_EQ(ra::autoQuadDecimate(8000, 6000), 16.0f);
   EXPECT_EQ(ra::autoQuadDecimate(0, 0), 1.0f);
   // The factor used is reported; a per-call factor overrides the options.
   const cv::Mat image = canvasWithTag(3, 40, 40);
   const ra::Detector detector;
-  EXPECT_EQ(detector.detectReport(image).quadDecimate, 1.0f);
+  const ra::DetectionReport automatic = detector.detectReport(image);
+  EXPECT_EQ(automatic.quadDecimate, 1.0f);  // 400 x 360: no decimation
+  EXPECT_EQ(automatic.passes, 1);
   const ra::DetectionReport forced = detector.detectReport(image, 2.0f);
   EXPECT_EQ(forced.quadDecimate, 2.0f);
   ASSERT_EQ(forced.tags.size(), 1u);
   EXPECT_EQ(forced.tags[0].id, 3);
   EXPECT_THROW((void)detector.detectReport(image, 0.5f), roiclip::InvalidInputError);
+}
+
+// A 1920 x 1080 frame with tag `id` drawn with a black square of `side` pixels, turned by
+// `degrees` about (cx, cy), lightly blurred.
+void drawTag(cv::Mat& frame, int id, double side, double degrees, cv::Point2d centre) {
+  int border = 0;
+  const cv::Mat tag = ra::renderTag("tag36h11", id, &border);
+  const double cell = side / (tag.cols - 2);  // the rendered tag has one white cell each side
+  cv::Mat big;
+  cv::resize(tag, big, cv::Size(), cell, cell, cv::INTER_NEAREST);
+  cv::Mat m = cv::getRotationMatrix2D(cv::Point2f(big.cols / 2.0f, big.rows / 2.0f), degrees, 1.0);
+  m.at<double>(0, 2) += centre.x - big.cols / 2.0;
+  m.at<double>(1, 2) += centre.y - big.rows / 2.0;
+  cv::Mat warped, mask;
+  cv::warpAffine(big, warped, m, frame.size(), cv::INTER_LINEAR);
+  cv::warpAffine(cv::Mat(big.size(), CV_8UC1, cv::Scalar(255)), mask, m, frame.size(),
+                 cv::INTER_LINEAR);
+  warped.copyTo(frame, mask > 128);
+}
+
+std::vector<int> idsOf(const ra::DetectionReport& r) {
+  std::vector<int> ids;
+  for (const ra::Detection& d : r.tags) ids.push_back(d.id);
+  return ids;
+}
+
+// kAutoDecimatePixels rests on this: one pass finds a tag whose black square is 14 decimated
+// pixels a side (56 px at decimate 4, the automatic factor at 1080p), turned, blurred and noisy.
+TEST(AprilTagDetector, OnePassFindsTagsOfFourteenDecimatedPixels) {
+  const ra::Detector detector;
+  cv::RNG rng(7);
+  for (const float decimate : {2.0f, 3.0f, 4.0f}) {
+    cv::Mat frame(1080, 1920, CV_8UC1, cv::Scalar(110));
+    std::vector<int> want;
+    for (int i = 0; i < 12; ++i) {  // a 4 x 3 grid, each tag turned differently
+      drawTag(frame, i, 14 * decimate, rng.uniform(-40.0, 40.0),
+              {240.0 + 480 * (i % 4), 180.0 + 360 * (i / 4)});
+      want.push_back(i);
+    }
+    cv::GaussianBlur(frame, frame, cv::Size(0, 0), 0.8);
+    cv::Mat noise(frame.size(), CV_8UC1);
+    rng.fill(noise, cv::RNG::NORMAL, 0, 4);
+    frame += noise;
+    EXPECT_EQ(idsOf(detector.detectReport(frame, decimate)), want) << "decimate " << decimate;
+  }
+}
+
+// Automatic decimation runs coarse to fine: a finer pass follows when a pass finds no tag, a
+// small tag, or misses an id the caller expects.
+TEST(AprilTagDetector, AutomaticDecimationGoesFinerWhenAPassFallsShort) {
+  const ra::Detector detector;
+  cv::Mat frame(1080, 1920, CV_8UC1, cv::Scalar(110));
+  drawTag(frame, 1, 240, 10, {500, 500});
+  drawTag(frame, 2, 16, 0, {1400, 500});  // 4 decimated pixels at 4: lost by the first pass
+  cv::GaussianBlur(frame, frame, cv::Size(0, 0), 0.8);
+  // Only the large tag: nothing says the small one is missing (the documented limit).
+  const ra::DetectionReport coarse = detector.detectReport(frame);
+  EXPECT_EQ(coarse.quadDecimate, 4.0f);
+  EXPECT_EQ(coarse.passes, 1);
+  EXPECT_EQ(idsOf(coarse), std::vector<int>{1});
+  // Expecting id 2 runs finer passes (2, then 1: at 2 the small tag is missing or, found, too
+  // small), which find both.
+  const ra::DetectionReport expected = detector.detectReport(frame, 0, {1, 2});
+  EXPECT_EQ(expected.quadDecimate, 1.0f);
+  EXPECT_EQ(expected.passes, 3);
+  EXPECT_EQ(idsOf(expected), (std::vector<int>{1, 2}));
+  // A small tag found alone asks for a finer pass too (14 decimated pixels at 4).
+  cv::Mat small(1080, 1920, CV_8UC1, cv::Scalar(110));
+  drawTag(small, 5, 56, 20, {900, 600});
+  cv::GaussianBlur(small, small, cv::Size(0, 0), 0.8);
+  const ra::DetectionReport finer = detector.detectReport(small);
+  EXPECT_EQ(idsOf(finer), std::vector<int>{5});
+  EXPECT_EQ(finer.passes, 2);
+  EXPECT_EQ(finer.quadDecimate, 2.0f);
+  // No tag at all: passes at 4, 2 and 1.
+  const ra::DetectionReport none = detector.detectReport(cv::Mat(1080, 1920, CV_8UC1, 110));
+  EXPECT_TRUE(none.tags.empty());
+  EXPECT_EQ(none.passes, 3);
+  EXPECT_EQ(none.quadDecimate, 1.0f);
+  // A fixed factor is one pass, whatever it finds.
+  EXPECT_EQ(detector.detectReport(frame, 4.0f, {1, 2}).passes, 1);
 }
 
 // The tag of canvasWithTag() with one payload cell inverted: it decodes with one corrected bit.

@@ -401,7 +401,7 @@ TEST_P(AprilTagScene, Detection) {
 }
 
 // A camera-resolution photo: scene_01 (800 x 600) upscaled 10x to 8000 x 6000. With the default
-// (automatic) decimation quads are searched on 1000 x 750 pixels and refined at full resolution:
+// (automatic) decimation quads are searched on 500 x 375 pixels and refined at full resolution:
 // every tag is found, with corners within half a pixel of the original scene's resolution.
 TEST(AprilTagCameraResolution, FindsEveryTagAtTheDefaults) {
   const cv::Mat scene = cv::imread(kImages + "/scene_01.png", cv::IMREAD_GRAYSCALE);
@@ -412,7 +412,8 @@ TEST(AprilTagCameraResolution, FindsEveryTagAtTheDefaults) {
   ASSERT_EQ(photo.size(), cv::Size(8000, 6000));
   const Truth truth = loadTruth("scene_01");
   const ra::DetectionReport report = ra::Detector().detectReport(photo);
-  EXPECT_EQ(report.quadDecimate, 8.0f);
+  EXPECT_EQ(report.quadDecimate, 16.0f);
+  EXPECT_EQ(report.passes, 1);
   std::vector<int> ids;
   double worst = 0;
   for (const ra::Detection& d : report.tags) {
@@ -430,7 +431,7 @@ TEST(AprilTagCameraResolution, FindsEveryTagAtTheDefaults) {
 }
 
 // Small tags in a large image: scene_01 shrunk to 15% (tags about 18 px a side) in a 3840 x 2160
-// frame. The automatic decimation (4) loses them; the full-resolution second pass finds them all.
+// frame. The automatic decimation (8) loses them; the finer passes (4, 2, 1) find them all.
 TEST(AprilTagCameraResolution, SmallTagsInALargeImageAreFoundByTheSecondPass) {
   const cv::Mat scene = cv::imread(kImages + "/scene_01.png", cv::IMREAD_GRAYSCALE);
   ASSERT_FALSE(scene.empty());
@@ -439,7 +440,7 @@ TEST(AprilTagCameraResolution, SmallTagsInALargeImageAreFoundByTheSecondPass) {
   cv::Mat frame(2160, 3840, CV_8UC1, cv::Scalar(95));
   small.copyTo(frame(cv::Rect(1600, 900, small.cols, small.rows)));
   const ra::Detector detector;
-  EXPECT_TRUE(detector.detectReport(frame, 4.0f).tags.empty());  // what one pass would give
+  EXPECT_TRUE(detector.detectReport(frame, 8.0f).tags.empty());  // what one pass would give
   const ra::DetectionReport report = detector.detectReport(frame);
   EXPECT_EQ(report.quadDecimate, 1.0f);
   std::vector<int> ids;
@@ -450,7 +451,9 @@ TEST(AprilTagCameraResolution, SmallTagsInALargeImageAreFoundByTheSecondPass) {
   cv::resize(scene, big, cv::Size(), 2.7, 2.7, cv::INTER_LINEAR);
   frame(cv::Rect(0, 0, big.cols, big.rows)).setTo(95);
   big.copyTo(frame(cv::Rect(0, 0, big.cols, big.rows)));
-  EXPECT_EQ(detector.detectReport(frame).quadDecimate, 4.0f);
+  const ra::DetectionReport large = detector.detectReport(frame);
+  EXPECT_EQ(large.quadDecimate, 8.0f);
+  EXPECT_EQ(large.passes, 1);
 }
 
 TEST_P(AprilTagScene, BoardRoi) {

@@ -448,12 +448,15 @@ TEST(BatchEdges, ApproxEpsilonAlsoSimplifiesTheEdges) {
 
 // --- core calls per image --------------------------------------------------------------------
 
-TEST(BatchCoreCalls, TwoPerContourPlusThreeAndTheMaskCheckDoesNotClip) {
-  // One simplify of the ROI and one difference taking the tags out; per contour one simplify
-  // (input area) and one clip; one clip of all contours together, which the mask check takes
-  // as it is: 2N + 3 for N contours, 2N + 2 with the tags kept.
+TEST(BatchCoreCalls, OnePerContourPlusThreeAndTheMaskCheckDoesNotClip) {
+  // One simplify of the ROI and one difference taking the tags out; per contour one clip (its
+  // input area is the shoelace sum, opencv::pixelContourArea); one clip of all contours
+  // together, which the mask check takes as it is: N + 3 for N contours, N + 2 with the tags
+  // kept. With approxPolyDP each contour's input area takes one simplify more: 2N + 3.
   rb::RunOptions keep = kDefaults;
   keep.keepTags = true;
+  rb::RunOptions approximate = kDefaults;
+  approximate.contours.approxEpsilon = 1.5;
   for (const char* scene : {"scene_01", "scene_04", "scene_07"}) {
     const cv::Mat image = cv::imread(kImages + "/" + scene + ".png", cv::IMREAD_GRAYSCALE);
     rb::detail::CoreCalls calls;
@@ -461,14 +464,18 @@ TEST(BatchCoreCalls, TwoPerContourPlusThreeAndTheMaskCheckDoesNotClip) {
     ASSERT_EQ(r.status, rb::Status::Ok) << scene << ": " << r.reason;
     const int n = r.contoursIn;
     ASSERT_GT(n, 0) << scene;
-    EXPECT_EQ(calls.simplify, 1 + n) << scene;
+    EXPECT_EQ(calls.simplify, 1) << scene;
     EXPECT_EQ(calls.clip, n + 2) << scene;
     EXPECT_EQ(calls.clipLines, 0) << scene;
-    EXPECT_EQ(calls.total(), 2 * n + 3) << scene;
+    EXPECT_EQ(calls.total(), n + 3) << scene;
     rb::detail::CoreCalls kept;
     const rb::ImageResult k = rb::detail::processCountingCoreCalls(image, keep, kept);
     ASSERT_EQ(k.status, rb::Status::Ok) << scene << ": " << k.reason;
-    EXPECT_EQ(kept.total(), 2 * k.contoursIn + 2) << scene;
+    EXPECT_EQ(kept.total(), k.contoursIn + 2) << scene;
+    rb::detail::CoreCalls approx;
+    const rb::ImageResult a = rb::detail::processCountingCoreCalls(image, approximate, approx);
+    ASSERT_EQ(a.status, rb::Status::Ok) << scene << ": " << a.reason;
+    EXPECT_EQ(approx.total(), 2 * a.contoursIn + 3) << scene;
     // The same result as the uncounted pipeline.
     const rb::ImageResult plain = rb::processImage(image, kDefaults);
     EXPECT_EQ(plain.clippedArea, r.clippedArea) << scene;
@@ -482,7 +489,7 @@ TEST(BatchCoreCalls, TwoPerContourPlusThreeAndTheMaskCheckDoesNotClip) {
   const rb::ImageResult e = rb::detail::processCountingCoreCalls(image, edges, withEdges);
   ASSERT_EQ(e.status, rb::Status::Ok) << e.reason;
   EXPECT_EQ(withEdges.clipLines, 1);
-  EXPECT_EQ(withEdges.total(), 2 * e.contoursIn + 4);
+  EXPECT_EQ(withEdges.total(), e.contoursIn + 4);
   rb::detail::CoreCalls none;
   const rb::ImageResult blank = rb::detail::processCountingCoreCalls(
       cv::Mat(64, 64, CV_8UC1, cv::Scalar(255)), kDefaults, none);

@@ -103,11 +103,14 @@ struct DetectorOptions {
   /// Tag family name, or several separated by commas ("tag36h11,tag25h9"); see
   /// availableFamilies(). Unknown or repeated names throw InvalidInputError.
   std::string family = "tag36h11";
-  /// Detect quads on an image decimated by this factor (>= 1), or 0 (the default) for a factor
-  /// chosen from each image's size by autoQuadDecimate(), with a second full-resolution pass
-  /// when that finds no or only small tags (kAutoDecimateMinTagSide). Corners are refined on the
-  /// full resolution image either way (refineEdges), so decimation costs little corner accuracy; it
-  /// loses tags whose side, divided by the factor, falls below about 20 pixels.
+  /// Detect quads on an image decimated by this factor (>= 1), or 0 (the default) for automatic
+  /// decimation: a coarse factor chosen from each image's size by autoQuadDecimate(), then finer
+  /// passes (each at most half the factor before, down to 1) while a pass finds no tag, finds a
+  /// tag whose side is below kAutoDecimateMinTagSide decimated pixels, or misses an expected id
+  /// (Detector::detectReport). Corners are refined on the full resolution image either way
+  /// (refineEdges), so decimation costs little corner accuracy. One pass finds tags whose black
+  /// square, divided by the factor, is 14 pixels or more a side; with automatic decimation a
+  /// smaller tag is lost only when a larger one is found beside it and no expected id is missing.
   float quadDecimate = 0.0f;
   /// Gaussian blur sigma applied to the quad-detection image (0 = off, negative = sharpen).
   /// The caller's image is never modified (see Detector::detect).
@@ -129,24 +132,27 @@ struct DetectorOptions {
   double minDecisionMargin = 0.0;
 };
 
-/// Quads are searched on images of at least this many pixels when the decimation is automatic:
-/// about 0.5 MP, where tags of 20 pixels or more per side (after decimation) are still found.
-constexpr double kAutoDecimatePixels = 500'000;
-/// With automatic decimation, an image is searched again at full resolution when the decimated
-/// pass found no tag, or its smallest tag side shrank below this many decimated pixels (a tag
-/// that small suggests smaller ones were lost).
-constexpr double kAutoDecimateMinTagSide = 24;
+/// The first pass of automatic decimation searches quads on at least this many pixels (about
+/// 0.12 MP: 480 x 270 for a 1080p frame). Tags whose black square is 14 decimated pixels or more
+/// a side are found there (56 px at 1080p); tests/apriltag/detector_test.cpp measures it.
+constexpr double kAutoDecimatePixels = 120'000;
+/// With automatic decimation, a finer pass follows when the last pass found no tag, or its
+/// smallest tag side is below this many decimated pixels (a tag that small suggests smaller ones
+/// were lost), or an expected id is missing.
+constexpr double kAutoDecimateMinTagSide = 16;
 
 /// The decimation DetectorOptions::quadDecimate = 0 uses for a width x height image: the largest
 /// of 1, 1.5, 2, 3, 4, 5, 6, 8, 10, 12, 16 that leaves at least kAutoDecimatePixels pixels
-/// (so 1 up to about 1000 x 700, 2 for 1920 x 1080, 4 for 3840 x 2160, 8 for 8000 x 6000).
+/// (so 1.5 for 640 x 480, 2 for 800 x 600, 4 for 1920 x 1080, 8 for 3840 x 2160, 16 for
+/// 8000 x 6000).
 float autoQuadDecimate(int width, int height);
 
 /// What one Detector::detectReport() call found.
 struct DetectionReport {
   std::vector<Detection> tags;      ///< accepted detections, sorted by id (then centre x)
   std::vector<Detection> rejected;  ///< decoded but over maxHamming or under minDecisionMargin
-  float quadDecimate = 1.0f;        ///< the decimation used
+  float quadDecimate = 1.0f;        ///< the decimation of the pass whose detections these are
+  int passes = 1;                   ///< libapriltag passes run (automatic decimation may add some)
 };
 
 /// Family names this build supports (those libapriltag 3.3 ships): tag36h11, tag25h9, tag16h5,
@@ -197,7 +203,10 @@ class Detector {
   /// @param image as detect().
   /// @param quadDecimate overrides DetectorOptions::quadDecimate for this call when > 0 (for
   ///        a finer second try after the automatic factor missed a tag).
-  [[nodiscard]] DetectionReport detectReport(cv::InputArray image, float quadDecimate = 0) const;
+  /// @param expectedIds with automatic decimation, ids the caller expects in the image (the
+  ///        tags an ROI spec names): a pass that misses one of them is followed by a finer one.
+  [[nodiscard]] DetectionReport detectReport(cv::InputArray image, float quadDecimate = 0,
+                                             const std::vector<int>& expectedIds = {}) const;
 
   /// The options this Detector was made with.
   [[nodiscard]] const DetectorOptions& options() const;

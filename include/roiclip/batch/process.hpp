@@ -77,7 +77,8 @@ struct ImageResult {
   std::vector<apriltag::Detection> tags;        ///< accepted detections, sorted by id
   /// Detections dropped as doubtful (DetectorOptions::maxHamming, minDecisionMargin).
   std::vector<apriltag::Detection> rejectedTags;
-  float quadDecimate = 1.0f;                         ///< the AprilTag decimation that found `tags`
+  float quadDecimate = 1.0f;  ///< the AprilTag decimation that found `tags`
+  int detectPasses = 0;       ///< AprilTag passes run (automatic decimation: coarse to fine)
   std::optional<apriltag::MissingTags> missingTags;  ///< set when the ROI builder failed
   std::vector<RoiRegion> rois;  ///< every named ROI (one unless several specs or a whole board)
   /// The tag quads taken out of the region (each grown by RunOptions::tagMargin); empty with

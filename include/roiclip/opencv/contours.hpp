@@ -64,4 +64,12 @@ struct ContourOptions {
 /// @throws InvalidInputError for another image type or a bad adaptive block size.
 std::vector<ContourGroup> detectContours(cv::InputArray gray, const ContourOptions& options);
 
+/// The area of a group that came straight from cv::findContours (no cv::approxPolyDP), under
+/// every fill rule, without a core call: such rings follow pixel borders, so they touch
+/// themselves and each other at most (never cross) and holes lie inside their outer ring; the
+/// winding number is then 0 or 1 everywhere and the area is the rings' shoelace sum (computed in
+/// integers, then rounded once to double). For a group that may cross itself (approxPolyDP
+/// output), use roiclip::simplify(group.rings, rule).area().
+double pixelContourArea(const ContourGroup& group);
+
 }  // namespace roiclip::opencv
