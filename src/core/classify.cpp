@@ -12,7 +12,7 @@
 
 namespace roiclip::detail {
 
-bool Combination::inside(const Windings& w) const {
+bool BooleanSpec::inside(const Windings& w) const {
   const bool s = isFilled(subjectRule, w[0]);
   if (!binary) return s;
   const bool c = isFilled(clipRule, w[1]);
@@ -30,17 +30,17 @@ bool Combination::inside(const Windings& w) const {
 }
 
 Side classifyPiece(const Windings& below, const Windings& contribution,
-                   const Combination& combination) {
-  const bool in = combination.inside(below);
-  const bool above = combination.inside({below[0] + contribution[0], below[1] + contribution[1]});
+                   const BooleanSpec& spec) {
+  const bool in = spec.inside(below);
+  const bool above = spec.inside({below[0] + contribution[0], below[1] + contribution[1]});
   if (in == above) return Side::None;
   return above ? Side::Above : Side::Below;
 }
 
 LinePlace classifyOpenPiece(const Windings& below, const Windings& above,
-                            const Combination& combination) {
-  const bool in = combination.inside(below);
-  const bool out = combination.inside(above);
+                            const BooleanSpec& spec) {
+  const bool in = spec.inside(below);
+  const bool out = spec.inside(above);
   if (in && out) return LinePlace::Inside;
   return in || out ? LinePlace::Boundary : LinePlace::Outside;
 }
