@@ -66,15 +66,37 @@ struct BooleanSpec {
   ClipOp op = ClipOp::Intersection;
   FillRule subjectRule = FillRule::EvenOdd;
   FillRule clipRule = FillRule::EvenOdd;
-  [[nodiscard]] bool inside(const Windings& w) const;
+  /// Whether a point with these winding numbers is in the result. (Inline: the sweep asks this
+  /// twice for every piece.)
+  [[nodiscard]] bool inside(const Windings& w) const {
+    const bool s = isFilled(subjectRule, w[0]);
+    if (!binary) return s;
+    const bool c = isFilled(clipRule, w[1]);
+    switch (op) {
+      case ClipOp::Intersection:
+        return s && c;
+      case ClipOp::Union:
+        return s || c;
+      case ClipOp::Difference:
+        return s && !c;
+      case ClipOp::Xor:
+        return s != c;
+    }
+    return false;
+  }
 };
 
 /// Stage 2 (classify.cpp): from the winding numbers just below a piece and its contribution,
 /// the fill rules and the operation decide whether the piece bounds the result and on which
 /// side the result lies. Pieces between regions of equal status (the paper's "edges inside
 /// holes") get Side::None and are not kept.
-Side classifyPiece(const Windings& below, const Windings& contribution,
-                   const BooleanSpec& spec);
+inline Side classifyPiece(const Windings& below, const Windings& contribution,
+                          const BooleanSpec& spec) {
+  const bool in = spec.inside(below);
+  const bool above = spec.inside({below[0] + contribution[0], below[1] + contribution[1]});
+  if (in == above) return Side::None;
+  return above ? Side::Above : Side::Below;
+}
 
 /// Where a piece of an open polyline lies relative to the region.
 enum class LinePlace : std::uint8_t {

@@ -46,13 +46,18 @@ class Sweep {
         queue_(ws.queue),
         starting_(ws.starting),
         through_(ws.through),
-        status_(StatusLess{}) {
+        nodes_(ws.nodes),
+        freeNodes_(ws.freeNodes),
+        status_(StatusLess{&pieces_}) {
     const std::size_t total = edges.size() + exactEdges.size();
     // The status links pieces by address: the array must not move while the sweep runs.
     pieces_.clear();
     pieces_.reserve(total);
     starts_.clear();
     queue_.clear();
+    nodes_.clear();
+    nodes_.reserve(total);  // at most one node per piece is live
+    freeNodes_.clear();
     starts_.reserve(edges.size() * 2);
     for (const InputEdge& e : edges) {
       SweepPiece a;
@@ -110,10 +115,12 @@ class Sweep {
  private:
   // Order of active pieces along the sweep line, bottom to top. Pieces in the status never cross
   // to the left of the sweep point, so comparing where the later-starting piece begins against
-  // the other's supporting line is enough. Ties between coincident pieces go by address, i.e.
-  // by index in the pieces array.
+  // the other's supporting line is enough.
   struct StatusLess {
-    bool operator()(const SweepPiece& pa, const SweepPiece& pb) const {
+    const std::vector<SweepPiece>* pieces;
+    bool operator()(const StatusNode& na, const StatusNode& nb) const {
+      const SweepPiece& pa = (*pieces)[std::size_t(na.piece)];
+      const SweepPiece& pb = (*pieces)[std::size_t(nb.piece)];
       const int c = compare(pa.left, pb.left);
       int o = 0;
       if (c < 0) {
@@ -125,24 +132,28 @@ class Sweep {
       const int s = crossSign(pa.direction(), pb.direction());
       if (s != 0) return s > 0;
       // Coincident: the (single, merged) closed piece below the open ones, as visit() labels.
-      return pa.open != pb.open ? pb.open : &pa < &pb;
+      return pa.open != pb.open ? pb.open : na.piece < nb.piece;
     }
   };
   // Piece below point / point below piece, for finding the pieces through a point.
   struct PointLess {
-    bool operator()(const SweepPiece& a, const XPoint& p) const {
+    const std::vector<SweepPiece>* pieces;
+    bool operator()(const StatusNode& n, const XPoint& p) const {
+      const SweepPiece& a = (*pieces)[std::size_t(n.piece)];
       return orient(a.lineA, a.lineB, p) > 0;
     }
-    bool operator()(const XPoint& p, const SweepPiece& a) const {
+    bool operator()(const XPoint& p, const StatusNode& n) const {
+      const SweepPiece& a = (*pieces)[std::size_t(n.piece)];
       return orient(a.lineA, a.lineB, p) < 0;
     }
   };
   using Status = boost::intrusive::set<
-      SweepPiece, boost::intrusive::member_hook<SweepPiece, StatusHook, &SweepPiece::hook>,
+      StatusNode, boost::intrusive::member_hook<StatusNode, StatusHook, &StatusNode::hook>,
       boost::intrusive::compare<StatusLess>, boost::intrusive::constant_time_size<false>>;
   using Node = Status::iterator;
 
-  int id(const SweepPiece& a) const { return int(&a - pieces_.data()); }
+  SweepPiece& piece(Node it) { return pieces_[std::size_t(it->piece)]; }
+  int nodeIndex(Node it) const { return int(&*it - nodes_.data()); }
 
   void push(const SweepEvent& e) {
     queue_.push_back(e);
@@ -185,11 +196,11 @@ class Sweep {
     starting_.clear();
     const int locator = takeEventsAt(p);
     const auto [lo, hi] = piecesThrough(p, locator);
-    const int below = lo == status_.begin() ? -1 : id(*std::prev(lo));
+    const int below = lo == status_.begin() ? -1 : std::prev(lo)->piece;
     cutAt(lo, hi, p);
     mergeCoincident();
     insertStarting(lo, hi, below, p);
-    const int above = hi == status_.end() ? -1 : id(*hi);
+    const int above = hi == status_.end() ? -1 : hi->piece;
     if (starting_.empty()) {
       checkCrossing(below, above, p);
     } else {
@@ -206,7 +217,7 @@ class Sweep {
       const SweepStart& ev = starts_[cursor_];
       if (!ev.end) {
         starting_.push_back(ev.piece);
-      } else if (pieces_[ev.piece].inStatus && equal(pieces_[ev.piece].right, p)) {
+      } else if (pieces_[ev.piece].node >= 0 && equal(pieces_[ev.piece].right, p)) {
         locator = ev.piece;
       }
       ++cursor_;
@@ -216,7 +227,7 @@ class Sweep {
       if (ev.piece >= 0) starting_.push_back(ev.piece);
       // A piece still in the status whose line passes through p goes through p (it started
       // before p and ends at or after it).
-      if (locator < 0 && ev.through >= 0 && pieces_[ev.through].inStatus &&
+      if (locator < 0 && ev.through >= 0 && pieces_[ev.through].node >= 0 &&
           orient(pieces_[ev.through].lineA, pieces_[ev.through].lineB, p) == 0) {
         locator = ev.through;
       }
@@ -227,14 +238,17 @@ class Sweep {
 
   // The pieces through p are contiguous in the status: [lo, hi).
   std::pair<Node, Node> piecesThrough(const XPoint& p, int locator) {
-    const auto passes = [&](Node it) { return orient(it->lineA, it->lineB, p) == 0; };
+    const auto passes = [&](Node it) {
+      const SweepPiece& a = piece(it);
+      return orient(a.lineA, a.lineB, p) == 0;
+    };
     Node lo, hi;
     if (locator >= 0) {
-      lo = status_.iterator_to(pieces_[locator]);
+      lo = status_.iterator_to(nodes_[std::size_t(pieces_[locator].node)]);
       hi = std::next(lo);
       while (lo != status_.begin() && passes(std::prev(lo))) --lo;
     } else {
-      lo = status_.lower_bound(p, PointLess{});
+      lo = status_.lower_bound(p, PointLess{&pieces_});
       hi = lo;
     }
     while (hi != status_.end() && passes(hi)) ++hi;
@@ -242,12 +256,13 @@ class Sweep {
   }
 
   // Every piece through p ends here: its result piece gets p as right end, and the ones that go
-  // on start again at p. They stay linked until insertStarting() reuses or drops their nodes.
+  // on start again at p. Their nodes stay in the tree for insertStarting() to reuse or drop.
   void cutAt(Node lo, Node hi, const XPoint& p) {
     through_.clear();
-    for (Node it = lo; it != hi; ++it) through_.push_back(id(*it));
+    for (Node it = lo; it != hi; ++it) through_.push_back(it->piece);
     for (int i : through_) {
       SweepPiece& a = pieces_[i];
+      a.node = -1;
       if (a.slot >= 0) out_.pieces[a.slot].right = vertexHere(p);
       if (a.open) out_.openPieces.push_back({i, a.left, p, a.place});
       if (!equal(a.right, p)) {
@@ -287,46 +302,43 @@ class Sweep {
           a.open || !spec_.keepBoundary ? Side::None : classifyPiece(wind, a.contribution, spec_);
       if (side != Side::None) {
         a.slot = int(out_.pieces.size());
-        EdgePiece piece;
-        piece.left = vertexHere(p);
-        piece.lineA = a.lineA;
-        piece.lineB = a.lineB;
-        piece.contribution = a.contribution;
-        piece.windBelow = wind;
-        piece.below = resultBelow;
-        out_.pieces.push_back(piece);
+        EdgePiece kept;
+        kept.left = vertexHere(p);
+        kept.lineA = a.lineA;
+        kept.lineB = a.lineB;
+        kept.contribution = a.contribution;
+        kept.windBelow = wind;
+        kept.below = resultBelow;
+        out_.pieces.push_back(kept);
         out_.sides.push_back(side);
       }
       wind = a.windAbove();
       resultBelow = a.nearestResult();
-      link(a, node, hi);
+      if (node != hi) {  // same position in the order, see above
+        node->piece = i;
+        a.node = nodeIndex(node++);
+      } else {
+        a.node = newNode(i);
+        status_.insert_before(hi, nodes_[std::size_t(a.node)]);
+      }
     }
     while (node != hi) {
-      node->inStatus = false;
+      freeNodes_.push_back(nodeIndex(node));
       node = status_.erase(node);
     }
   }
 
-  // Puts `a` at `node`, the next place in [lo, hi) (or before hi once those are used up).
-  void link(SweepPiece& a, Node& node, Node hi) {
-    if (a.inStatus) {  // a piece through p going on: still linked, at or after `node`
-      const Node at = status_.iterator_to(a);
-      if (at == node) {
-        ++node;
-        return;
-      }
-      status_.erase(at);
-      status_.insert_before(node, a);
-      return;
-    }
-    a.inStatus = true;
-    if (node != hi) {
-      const Node old = node++;
-      old->inStatus = false;
-      status_.replace_node(old, a);
+  int newNode(int pieceId) {
+    int n;
+    if (!freeNodes_.empty()) {
+      n = freeNodes_.back();
+      freeNodes_.pop_back();
     } else {
-      status_.insert_before(hi, a);
+      n = int(nodes_.size());
+      nodes_.emplace_back();  // within the reserved capacity: linked nodes never move
     }
+    nodes_[std::size_t(n)].piece = pieceId;
+    return n;
   }
 
   // Sort the pieces in starting_ by direction; merge runs of coincident closed ones into the
@@ -334,13 +346,19 @@ class Sweep {
   // dropped: they change no winding number (a spike out and back along itself). Open pieces are
   // never merged or dropped; they follow the closed piece of their direction, as in the status.
   void mergeCoincident() {
-    std::sort(starting_.begin(), starting_.end(), [this](int a, int b) {
+    const auto before = [this](int a, int b) {
       const int s = crossSign(pieces_[a].direction(), pieces_[b].direction());
       if (s != 0) return s > 0;
       if (pieces_[a].open != pieces_[b].open) return pieces_[b].open;
       const int c = compare(pieces_[a].right, pieces_[b].right);
       return c != 0 ? c < 0 : a < b;
-    });
+    };
+    // Mostly one piece (a chain going on) or two (a crossing): no sort call for those.
+    if (starting_.size() == 2) {
+      if (before(starting_[1], starting_[0])) std::swap(starting_[0], starting_[1]);
+    } else if (starting_.size() > 2) {
+      std::sort(starting_.begin(), starting_.end(), before);
+    }
     std::size_t kept = 0;
     for (std::size_t i = 0; i < starting_.size();) {
       const int first = starting_[i];
@@ -403,6 +421,8 @@ class Sweep {
   std::vector<SweepEvent>& queue_;
   std::vector<int>& starting_;
   std::vector<int>& through_;
+  std::vector<StatusNode>& nodes_;
+  std::vector<int>& freeNodes_;
   Status status_;
   Arrangement out_;
 };

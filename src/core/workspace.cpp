@@ -16,6 +16,8 @@ void Workspace::recycleAll() {
   recycle(pieces);
   recycle(starts);
   recycle(queue);
+  recycle(nodes);
+  recycle(freeNodes);
   recycle(starting);
   recycle(through);
   recycle(path);
@@ -28,6 +30,8 @@ void Workspace::release() {
   std::vector<SweepPiece>().swap(pieces);
   std::vector<SweepStart>().swap(starts);
   std::vector<SweepEvent>().swap(queue);
+  std::vector<StatusNode>().swap(nodes);
+  std::vector<int>().swap(freeNodes);
   std::vector<int>().swap(starting);
   std::vector<int>().swap(through);
   std::vector<ClipVertex>().swap(path);

@@ -29,11 +29,16 @@ void recycle(std::vector<T>& v) {
   }
 }
 
-/// The sweep's status (the active pieces bottom to top) is an intrusive red-black tree whose
-/// nodes are the pieces themselves: no allocation per insertion, no node handles kept aside.
+/// The sweep's status (the active pieces bottom to top) is an intrusive red-black tree over a
+/// pool of nodes: no allocation per insertion, and a node keeps its place in the tree when the
+/// piece it holds changes (a chain going on, two pieces crossing).
 using StatusHook = boost::intrusive::set_member_hook<
     boost::intrusive::link_mode<boost::intrusive::normal_link>,
     boost::intrusive::optimize_size<true>>;
+struct StatusNode {
+  StatusHook hook;
+  int piece = -1;
+};
 
 /// A piece of an input edge while the sweep has it (split_edges.cpp).
 struct SweepPiece {
@@ -41,12 +46,11 @@ struct SweepPiece {
   IPoint lineA, lineB;
   Windings contribution{};
   Windings windBelow{};
-  StatusHook hook;
+  int node = -1;          ///< its status node while in the status, else -1
   int slot = -1;          ///< index of its output piece (result pieces only) while in the status
   int resultBelow = -1;   ///< nearest result piece below it when it was inserted
   int checkedAbove = -1;  ///< the last piece above it tested for a crossing
   bool open = false;      ///< a piece of an open polyline (zero contribution, never merged)
-  bool inStatus = false;
   LinePlace place = LinePlace::Outside;  ///< open pieces: where it lies
   [[nodiscard]] int nearestResult() const { return slot >= 0 ? slot : resultBelow; }
   [[nodiscard]] IPoint direction() const { return {lineB.x - lineA.x, lineB.y - lineA.y}; }
@@ -83,6 +87,8 @@ struct Workspace {
   std::vector<SweepPiece> pieces;
   std::vector<SweepStart> starts;
   std::vector<SweepEvent> queue;  ///< a binary heap, earliest point first
+  std::vector<StatusNode> nodes;  ///< status node pool (must not move while the sweep runs)
+  std::vector<int> freeNodes;
   std::vector<int> starting;      ///< pieces starting at the current event point
   std::vector<int> through;       ///< pieces through the current event point
   // Convex pre-clip (convex_clip.cpp, boolean_op.cpp).
