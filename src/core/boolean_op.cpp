@@ -31,11 +31,14 @@ PolygonSet intersectConvexRing(const SnappedOperand& other, const SnappedOperand
 }
 
 // Stages 1 to 4 of the general path on snapped operands (`clip` null for simplify).
-PolygonSet resolveGeneral(const Rings& subject, const Rings* clip, const BooleanSpec& spec,
+// The subject's rings are freed once its edges are made (they would add 16 bytes per vertex to
+// the sweep's peak).
+PolygonSet resolveGeneral(Rings& subject, const Rings* clip, const BooleanSpec& spec,
                           const Grid& grid, Workspace& ws) {
   std::vector<InputEdge>& edges = ws.edges;
   edges.clear();
   appendRingEdges(subject, 0, edges);
+  Rings().swap(subject);
   if (clip != nullptr) appendRingEdges(*clip, 1, edges);
   ws.clipped.clear();
   return resolve(edges, ws.clipped, spec, grid, ws);
@@ -51,7 +54,7 @@ SnappedOperand snapOperand(const Paths& paths, int operand, FillRule rule, const
   return out;
 }
 
-PolygonSet clipSnapped(ClipOp op, const SnappedOperand& subject, const SnappedOperand& clip,
+PolygonSet clipSnapped(ClipOp op, SnappedOperand& subject, const SnappedOperand& clip,
                        const Grid& grid, Workspace& ws) {
   if (op == ClipOp::Intersection) {
     // The region-of-interest case: a convex operand takes the linear pre-clip path.
@@ -68,7 +71,7 @@ PolygonSet clipSnapped(ClipOp op, const SnappedOperand& subject, const SnappedOp
 
 PolygonSet booleanGeneral(const Paths& subject, const Paths* clipPaths, const BooleanSpec& spec,
                           const Grid& grid) {
-  const Rings s = snapRings(subject, 0, grid);
+  Rings s = snapRings(subject, 0, grid);
   const Rings c = clipPaths != nullptr ? snapRings(*clipPaths, 1, grid) : Rings{};
   const WorkspaceLease ws;
   return resolveGeneral(s, clipPaths != nullptr ? &c : nullptr, spec, grid, *ws);

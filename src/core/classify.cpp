@@ -15,8 +15,7 @@
 
 namespace roiclip::detail {
 
-LinePlace classifyOpenPiece(const Windings& below, const Windings& above,
-                            const BooleanSpec& spec) {
+LinePlace classifyOpenPiece(const Windings& below, const Windings& above, const BooleanSpec& spec) {
   const bool in = spec.inside(below);
   const bool out = spec.inside(above);
   if (in && out) return LinePlace::Inside;

@@ -161,6 +161,9 @@ void preclipConvex(const Rings& rings, const std::vector<IPoint>& convexRing, in
       out.push_back(e);
     }
   }
+  // Not kept through the sweep that follows: at 1M vertices these two are 190 MB of the peak.
+  recycle(path);
+  recycle(next);
 }
 
 }  // namespace roiclip::detail

@@ -107,8 +107,7 @@ enum class LinePlace : std::uint8_t {
 
 /// Stage 2 for open pieces (classify.cpp): from the winding numbers on the two sides of the
 /// closed pieces coincident with an open piece (equal when there are none).
-LinePlace classifyOpenPiece(const Windings& below, const Windings& above,
-                            const BooleanSpec& spec);
+LinePlace classifyOpenPiece(const Windings& below, const Windings& above, const BooleanSpec& spec);
 
 /// A piece of one open input segment between two consecutive event points on it.
 struct OpenPiece {
@@ -210,8 +209,9 @@ struct SnappedOperand {
 SnappedOperand snapOperand(const Paths& paths, int operand, FillRule rule, const Grid& grid);
 
 /// clip() on snapped operands (boolean_op.cpp): the convex fast path for an intersection with a
-/// convex operand, else the general path.
-PolygonSet clipSnapped(ClipOp op, const SnappedOperand& subject, const SnappedOperand& clip,
+/// convex operand, else the general path. On the general path the subject's rings are freed
+/// once read.
+PolygonSet clipSnapped(ClipOp op, SnappedOperand& subject, const SnappedOperand& clip,
                        const Grid& grid, Workspace& workspace);
 
 /// clipLines() on a snapped region (clip_lines.cpp): `edges` holds the polylines' edges from

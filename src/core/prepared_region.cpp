@@ -26,7 +26,7 @@ PreparedRegion::PreparedRegion(PreparedRegion&& other) noexcept = default;
 PreparedRegion& PreparedRegion::operator=(PreparedRegion&& other) noexcept = default;
 
 PolygonSet PreparedRegion::clip(ClipOp op, const Paths& subject, FillRule subjectRule) const {
-  const detail::SnappedOperand s = detail::snapOperand(subject, 0, subjectRule, impl_->grid);
+  detail::SnappedOperand s = detail::snapOperand(subject, 0, subjectRule, impl_->grid);
   const detail::WorkspaceLease ws(impl_->workspace);
   return detail::clipSnapped(op, s, impl_->region, impl_->grid, *ws);
 }

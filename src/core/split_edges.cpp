@@ -25,16 +25,12 @@ namespace {
 
 // Earliest point first in the event heap (std::push_heap keeps the largest on top).
 struct EventAfter {
-  bool operator()(const SweepEvent& a, const SweepEvent& b) const {
-    return less(b.point, a.point);
-  }
+  bool operator()(const SweepEvent& a, const SweepEvent& b) const { return less(b.point, a.point); }
 };
 
 // q == p for a grid point q: grid points always have W == 1 (lineIntersection() stores
 // crossings on the grid so), so an off-grid p never equals q.
-inline bool atGridPoint(const XPoint& p, IPoint q) {
-  return p.w == 1 && p.x == q.x && p.y == q.y;
-}
+inline bool atGridPoint(const XPoint& p, IPoint q) { return p.w == 1 && p.x == q.x && p.y == q.y; }
 
 class Sweep {
  public:
@@ -56,7 +52,6 @@ class Sweep {
     starts_.clear();
     queue_.clear();
     nodes_.clear();
-    nodes_.reserve(total);  // at most one node per piece is live
     freeNodes_.clear();
     starts_.reserve(edges.size() * 2);
     for (const InputEdge& e : edges) {
@@ -95,8 +90,9 @@ class Sweep {
     // pdqsort: on the ends of a contour's edges (x rising and falling along the blob) std::sort's
     // median-of-3 quicksort hit its depth limit and fell back to heapsort, 18% of the 100k
     // contour x quad row.
-    boost::sort::pdqsort(starts_.begin(), starts_.end(),
-                         [](const SweepStart& a, const SweepStart& b) { return a.point < b.point; });
+    boost::sort::pdqsort(
+        starts_.begin(), starts_.end(),
+        [](const SweepStart& a, const SweepStart& b) { return a.point < b.point; });
     out_.pieces.reserve(total / 4 + 16);
     out_.vertices.reserve(total / 4 + 16);
   }
@@ -153,7 +149,7 @@ class Sweep {
   using Node = Status::iterator;
 
   SweepPiece& piece(Node it) { return pieces_[std::size_t(it->piece)]; }
-  int nodeIndex(Node it) const { return int(&*it - nodes_.data()); }
+  static int nodeIndex(Node it) { return it->self; }
 
   void push(const SweepEvent& e) {
     queue_.push_back(e);
@@ -335,7 +331,7 @@ class Sweep {
       freeNodes_.pop_back();
     } else {
       n = int(nodes_.size());
-      nodes_.emplace_back();  // within the reserved capacity: linked nodes never move
+      nodes_.emplace_back().self = n;
     }
     nodes_[std::size_t(n)].piece = pieceId;
     return n;
@@ -421,7 +417,7 @@ class Sweep {
   std::vector<SweepEvent>& queue_;
   std::vector<int>& starting_;
   std::vector<int>& through_;
-  std::vector<StatusNode>& nodes_;
+  std::deque<StatusNode>& nodes_;
   std::vector<int>& freeNodes_;
   Status status_;
   Arrangement out_;

@@ -16,7 +16,11 @@ void Workspace::recycleAll() {
   recycle(pieces);
   recycle(starts);
   recycle(queue);
-  recycle(nodes);
+  if (nodes.size() * sizeof(StatusNode) > kKeptScratchBytes) {
+    std::deque<StatusNode>().swap(nodes);
+  } else {
+    nodes.clear();
+  }
   recycle(freeNodes);
   recycle(starting);
   recycle(through);
@@ -30,7 +34,7 @@ void Workspace::release() {
   std::vector<SweepPiece>().swap(pieces);
   std::vector<SweepStart>().swap(starts);
   std::vector<SweepEvent>().swap(queue);
-  std::vector<StatusNode>().swap(nodes);
+  std::deque<StatusNode>().swap(nodes);
   std::vector<int>().swap(freeNodes);
   std::vector<int>().swap(starting);
   std::vector<int>().swap(through);

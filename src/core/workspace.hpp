@@ -6,6 +6,7 @@
 #pragma once
 
 #include <atomic>
+#include <deque>
 #include <memory>
 #include <vector>
 
@@ -32,12 +33,13 @@ void recycle(std::vector<T>& v) {
 /// The sweep's status (the active pieces bottom to top) is an intrusive red-black tree over a
 /// pool of nodes: no allocation per insertion, and a node keeps its place in the tree when the
 /// piece it holds changes (a chain going on, two pieces crossing).
-using StatusHook = boost::intrusive::set_member_hook<
-    boost::intrusive::link_mode<boost::intrusive::normal_link>,
-    boost::intrusive::optimize_size<true>>;
+using StatusHook =
+    boost::intrusive::set_member_hook<boost::intrusive::link_mode<boost::intrusive::normal_link>,
+                                      boost::intrusive::optimize_size<true>>;
 struct StatusNode {
   StatusHook hook;
   int piece = -1;
+  int self = -1;  ///< its index in the pool
 };
 
 /// A piece of an input edge while the sweep has it (split_edges.cpp).
@@ -87,10 +89,11 @@ struct Workspace {
   std::vector<SweepPiece> pieces;
   std::vector<SweepStart> starts;
   std::vector<SweepEvent> queue;  ///< a binary heap, earliest point first
-  std::vector<StatusNode> nodes;  ///< status node pool (must not move while the sweep runs)
+  /// Status node pool, as many as the status was ever wide (a deque: nodes never move).
+  std::deque<StatusNode> nodes;
   std::vector<int> freeNodes;
-  std::vector<int> starting;      ///< pieces starting at the current event point
-  std::vector<int> through;       ///< pieces through the current event point
+  std::vector<int> starting;  ///< pieces starting at the current event point
+  std::vector<int> through;   ///< pieces through the current event point
   // Convex pre-clip (convex_clip.cpp, boolean_op.cpp).
   std::vector<ClipVertex> path, next;
   std::vector<ExactEdge> clipped;
