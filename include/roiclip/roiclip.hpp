@@ -1,12 +1,10 @@
 // SPDX-License-Identifier: MIT
 // roiclip: exact clipping of self-intersecting polygons (extended Weiler-Atherton).
 // This header includes only the standard library and GLM. See geometry.hpp for conventions.
-//
-// Threads: every function here may be called from several threads at once. Each thread keeps
-// the working arrays of its largest call so far (up to 64 MiB per array; larger ones are freed
-// after the call), so repeated calls do not allocate and fault in fresh pages; the memory is
-// released when the thread exits, or at once by releaseThreadBuffers().
+// Every function here may be called from several threads at once.
 #pragma once
+
+#include <memory>
 
 #include <roiclip/error.hpp>
 #include <roiclip/geometry.hpp>
@@ -102,8 +100,55 @@ Paths clipLines(const Paths& lines, const Paths& region, FillRule regionRule,
                 LinePart part = LinePart::Inside, const Grid& grid = {});
 const char* toString(LinePart part);
 
-/// Free the working arrays the calling thread keeps between calls (see "Threads" above), e.g.
-/// after a burst of large inputs. The next call allocates them again.
+/// A clip region prepared once (snapped, validated, its convexity found) and applied to many
+/// subjects, e.g. one ROI and every contour of a video frame. Each call gives exactly what the
+/// free function with the same arguments gives (`region` as the clip operand), without reading
+/// the region again, and works in memory the object owns and keeps between calls (its largest
+/// call's working arrays, up to 64 MiB per array), so a loop over small subjects does not
+/// allocate working memory. Calls on one object from several threads at once are safe (a call
+/// that finds the object's memory in use works in memory of its own). An exception thrown by
+/// a call leaves the object usable.
+class PreparedRegion {
+ public:
+  /// @param region closed paths, read with `rule`; may self-intersect.
+  /// @param rule   the region's fill rule.
+  /// @param grid   snapping grid; every subject is snapped to it too.
+  /// @throws InvalidInputError as simplify() (region paths are named "clip path i").
+  explicit PreparedRegion(const Paths& region, FillRule rule = FillRule::EvenOdd,
+                          const Grid& grid = {});
+  /// A PolygonSet region, read as its rings under kPolygonSetFillRule (as the clip() overloads).
+  explicit PreparedRegion(const PolygonSet& region, const Grid& grid = {});
+  ~PreparedRegion();
+  PreparedRegion(PreparedRegion&& other) noexcept;             ///< takes over other's region
+  PreparedRegion& operator=(PreparedRegion&& other) noexcept;  ///< takes over other's region
+  PreparedRegion(const PreparedRegion&) = delete;
+  PreparedRegion& operator=(const PreparedRegion&) = delete;
+
+  /// clip(op, subject, region, subjectRule, rule, grid).
+  [[nodiscard]] PolygonSet clip(ClipOp op, const Paths& subject,
+                                FillRule subjectRule = FillRule::EvenOdd) const;
+  /// clip(op, subject, region, rule, grid) for a PolygonSet subject.
+  [[nodiscard]] PolygonSet clip(ClipOp op, const PolygonSet& subject) const;
+  /// clip(ClipOp::Intersection, subject, region, subjectRule, rule, grid).
+  [[nodiscard]] PolygonSet intersect(const Paths& subject,
+                                     FillRule subjectRule = FillRule::EvenOdd) const;
+  /// clipLines(lines, region, rule, part, grid).
+  [[nodiscard]] Paths clipLines(const Paths& lines, LinePart part = LinePart::Inside) const;
+
+  /// True when the region is a single strictly convex ring (intersections take the linear
+  /// pre-clip path).
+  [[nodiscard]] bool convex() const;
+  /// Free the working memory the object keeps between calls; the next call allocates it again.
+  void releaseMemory();
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+/// Free the working arrays the calling thread keeps for the free functions above (its largest
+/// call's, up to 64 MiB per array; freed anyway when the thread exits). The next call allocates
+/// them again.
 void releaseThreadBuffers();
 
 /// True when the fill rule counts winding number w as inside. (Inline: the sweep asks this for

@@ -1,81 +1,106 @@
 // SPDX-License-Identifier: MIT
-// The pipeline, in the order of the paper: split every self- and mutual intersection, classify
-// by winding number under the fill rules, trace simple contours with the stack method, fix the
-// orientation and nest holes in their outer rings.
+// The pipeline, in the order of the paper: snap each operand once, take the convex fast path
+// when it applies, split every self- and mutual intersection, classify by winding number under
+// the fill rules, trace simple contours with the stack method, fix the orientation and nest
+// holes in their outer rings.
 #include <roiclip/roiclip.hpp>
 
 #include "pipeline.hpp"
+#include "workspace.hpp"
 
 namespace roiclip {
 namespace detail {
 namespace {
 
 PolygonSet resolve(const std::vector<InputEdge>& edges, const std::vector<ExactEdge>& exactEdges,
-                   const Combination& how, const Grid& grid) {
-  const Arrangement arrangement = splitEdges(edges, exactEdges, how);  // stages 1 and 2
+                   const BooleanSpec& spec, const Grid& grid, Workspace& ws) {
+  const Arrangement arrangement = splitEdges(edges, exactEdges, spec, ws);  // stages 1 and 2
   const Contours contours = traceContours(arrangement);
   return buildNesting(arrangement, contours, grid);
 }
 
-// The pre-clipped edges, kept per thread between calls (see recycle()).
-thread_local std::vector<ExactEdge> tClipped;
-
 // Intersection with one convex ring: pre-clip the other operand to it, then resolve that alone.
-PolygonSet intersectConvexRing(const Paths& other, FillRule otherRule, int otherOperand,
-                               const std::vector<IPoint>& convexRing, FillRule convexRule,
-                               const Grid& grid) {
-  if (!isFilled(convexRule, convexOrientation(convexRing))) return {};
-  Combination how;
-  how.subjectRule = otherRule;
-  const RecycleOnExit<ExactEdge> recycled(tClipped);
-  preclipConvex(snapRings(other, otherOperand, grid), convexRing, tClipped);
-  return resolve({}, tClipped, how, grid);
+PolygonSet intersectConvexRing(const SnappedOperand& other, const SnappedOperand& convex,
+                               const Grid& grid, Workspace& ws) {
+  if (!isFilled(convex.rule, convex.convex)) return {};
+  BooleanSpec spec;
+  spec.subjectRule = other.rule;
+  preclipConvex(other.rings, convex.rings[0], convex.convex, ws, ws.clipped);
+  ws.edges.clear();
+  return resolve(ws.edges, ws.clipped, spec, grid, ws);
+}
+
+// Stages 1 to 4 of the general path on snapped operands (`clip` null for simplify).
+// The subject's rings are freed once its edges are made (they would add 16 bytes per vertex to
+// the sweep's peak).
+PolygonSet resolveGeneral(Rings& subject, const Rings* clip, const BooleanSpec& spec,
+                          const Grid& grid, Workspace& ws) {
+  std::vector<InputEdge>& edges = ws.edges;
+  edges.clear();
+  appendRingEdges(subject, 0, edges);
+  Rings().swap(subject);
+  if (clip != nullptr) appendRingEdges(*clip, 1, edges);
+  ws.clipped.clear();
+  return resolve(edges, ws.clipped, spec, grid, ws);
 }
 
 }  // namespace
 
-PolygonSet booleanGeneral(const Paths& subject, const Paths* clipPaths, const Combination& how,
+SnappedOperand snapOperand(const Paths& paths, int operand, FillRule rule, const Grid& grid) {
+  SnappedOperand out;
+  out.rings = snapRings(paths, operand, grid);
+  out.rule = rule;
+  out.convex = out.rings.size() == 1 ? convexOrientation(out.rings[0]) : 0;
+  return out;
+}
+
+PolygonSet clipSnapped(ClipOp op, SnappedOperand& subject, const SnappedOperand& clip,
+                       const Grid& grid, Workspace& ws) {
+  if (op == ClipOp::Intersection) {
+    // The region-of-interest case: a convex operand takes the linear pre-clip path.
+    if (clip.convex != 0) return intersectConvexRing(subject, clip, grid, ws);
+    if (subject.convex != 0) return intersectConvexRing(clip, subject, grid, ws);
+  }
+  BooleanSpec spec;
+  spec.binary = true;
+  spec.op = op;
+  spec.subjectRule = subject.rule;
+  spec.clipRule = clip.rule;
+  return resolveGeneral(subject.rings, &clip.rings, spec, grid, ws);
+}
+
+PolygonSet booleanGeneral(const Paths& subject, const Paths* clipPaths, const BooleanSpec& spec,
                           const Grid& grid) {
-  std::vector<InputEdge> edges;
-  appendInputEdges(subject, 0, grid, edges);
-  if (clipPaths != nullptr) appendInputEdges(*clipPaths, 1, grid, edges);
-  return resolve(edges, {}, how, grid);
+  Rings s = snapRings(subject, 0, grid);
+  const Rings c = clipPaths != nullptr ? snapRings(*clipPaths, 1, grid) : Rings{};
+  const WorkspaceLease ws;
+  return resolveGeneral(s, clipPaths != nullptr ? &c : nullptr, spec, grid, *ws);
 }
 
 }  // namespace detail
 
-void releaseThreadBuffers() {
-  std::vector<detail::ExactEdge>().swap(detail::tClipped);
-  detail::releasePreclipBuffers();
-  detail::releaseSweepBuffers();
-}
+void releaseThreadBuffers() { detail::releaseThreadWorkspace(); }
 
 PolygonSet simplify(const Paths& paths, FillRule rule, const Grid& grid) {
-  detail::Combination how;
-  how.subjectRule = rule;
-  return detail::booleanGeneral(paths, nullptr, how, grid);
+  detail::BooleanSpec spec;
+  spec.subjectRule = rule;
+  return detail::booleanGeneral(paths, nullptr, spec, grid);
 }
 
 PolygonSet clip(ClipOp op, const Paths& subject, const Paths& clipPaths, FillRule subjectRule,
                 FillRule clipRule, const Grid& grid) {
+  // Each operand is snapped and validated once; an intersection reads the clip first (its
+  // errors are reported first, as the ROI is usually the clip).
+  detail::SnappedOperand s, c;
   if (op == ClipOp::Intersection) {
-    // The region-of-interest case: a convex clip ring takes the linear pre-clip path.
-    const auto clipRings = detail::snapRings(clipPaths, 1, grid);
-    if (clipRings.size() == 1 && detail::convexOrientation(clipRings[0]) != 0) {
-      return detail::intersectConvexRing(subject, subjectRule, 0, clipRings[0], clipRule, grid);
-    }
-    const auto subjectRings = detail::snapRings(subject, 0, grid);
-    if (subjectRings.size() == 1 && detail::convexOrientation(subjectRings[0]) != 0) {
-      return detail::intersectConvexRing(clipPaths, clipRule, 1, subjectRings[0], subjectRule,
-                                         grid);
-    }
+    c = detail::snapOperand(clipPaths, 1, clipRule, grid);
+    s = detail::snapOperand(subject, 0, subjectRule, grid);
+  } else {
+    s = detail::snapOperand(subject, 0, subjectRule, grid);
+    c = detail::snapOperand(clipPaths, 1, clipRule, grid);
   }
-  detail::Combination how;
-  how.binary = true;
-  how.op = op;
-  how.subjectRule = subjectRule;
-  how.clipRule = clipRule;
-  return detail::booleanGeneral(subject, &clipPaths, how, grid);
+  const detail::WorkspaceLease ws;
+  return detail::clipSnapped(op, s, c, grid, *ws);
 }
 
 PolygonSet intersect(const Paths& subject, const Paths& clipPaths, FillRule rule,

@@ -6,41 +6,18 @@
 // whose midpoint falls inside a hole. Doing the same per piece, from the exact winding numbers
 // on its two sides, is what makes the decision correct for nested, overlapping and touching
 // contours and for every fill rule, not just even-odd and non-zero.
+//
+// classifyPiece() and BooleanSpec::inside() are inline in pipeline.hpp: the sweep asks them for
+// every piece (4% of a crossing-heavy row as calls into this file).
 #include <roiclip/roiclip.hpp>
 
 #include "pipeline.hpp"
 
 namespace roiclip::detail {
 
-bool Combination::inside(const Windings& w) const {
-  const bool s = isFilled(subjectRule, w[0]);
-  if (!binary) return s;
-  const bool c = isFilled(clipRule, w[1]);
-  switch (op) {
-    case ClipOp::Intersection:
-      return s && c;
-    case ClipOp::Union:
-      return s || c;
-    case ClipOp::Difference:
-      return s && !c;
-    case ClipOp::Xor:
-      return s != c;
-  }
-  return false;
-}
-
-Side classifyPiece(const Windings& below, const Windings& contribution,
-                   const Combination& combination) {
-  const bool in = combination.inside(below);
-  const bool above = combination.inside({below[0] + contribution[0], below[1] + contribution[1]});
-  if (in == above) return Side::None;
-  return above ? Side::Above : Side::Below;
-}
-
-LinePlace classifyOpenPiece(const Windings& below, const Windings& above,
-                            const Combination& combination) {
-  const bool in = combination.inside(below);
-  const bool out = combination.inside(above);
+LinePlace classifyOpenPiece(const Windings& below, const Windings& above, const BooleanSpec& spec) {
+  const bool in = spec.inside(below);
+  const bool out = spec.inside(above);
   if (in && out) return LinePlace::Inside;
   return in || out ? LinePlace::Boundary : LinePlace::Outside;
 }

@@ -13,6 +13,7 @@
 #include <roiclip/roiclip.hpp>
 
 #include "pipeline.hpp"
+#include "workspace.hpp"
 
 namespace roiclip {
 namespace detail {
@@ -85,7 +86,7 @@ class LineAssembler {
   static IPoint pointAt(const InputEdge& e, bool start) {
     return (e.direction > 0) == start ? e.a : e.b;
   }
-  void push(Path& path, const XPoint& p) const { path.emplace_back(p.dx() * inv_, p.dy() * inv_); }
+  void push(Path& path, const XPoint& p) const { path.emplace_back(p.fx * inv_, p.fy * inv_); }
 
   const std::vector<OpenPiece>& pieces_;
   LinePart part_;
@@ -139,28 +140,25 @@ std::vector<OpenPiece> clipToConvexRing(const std::vector<InputEdge>& edges,
 }  // namespace
 }  // namespace detail
 
-Paths clipLines(const Paths& lines, const Paths& region, FillRule regionRule, LinePart part,
-                const Grid& grid) {
-  using namespace detail;
-  std::vector<InputEdge> edges;
-  std::vector<std::size_t> firstEdge;
-  appendLineEdges(lines, grid, edges, firstEdge);
+namespace detail {
+
+Paths clipLinesSnapped(std::vector<InputEdge>& edges, const std::vector<std::size_t>& firstEdge,
+                       const SnappedOperand& region, LinePart part, const Grid& grid,
+                       Workspace& workspace) {
   const std::size_t lineEdges = edges.size();
-  // Region paths are operand 1 so that errors name them "clip".
-  const std::vector<std::vector<IPoint>> rings = snapRings(region, 1, grid);
   std::vector<OpenPiece> pieces;
-  const int orientation = rings.size() == 1 ? convexOrientation(rings[0]) : 0;
-  if (orientation != 0) {
-    pieces = clipToConvexRing(edges, rings[0], orientation, isFilled(regionRule, orientation));
+  if (region.convex != 0) {
+    pieces = clipToConvexRing(edges, region.rings[0], region.convex,
+                              isFilled(region.rule, region.convex));
   } else {
-    appendInputEdges(region, 1, grid, edges);
+    appendRingEdges(region.rings, 1, edges);
     // The union with an empty subject is the region itself.
-    Combination how;
-    how.binary = true;
-    how.op = ClipOp::Union;
-    how.clipRule = regionRule;
-    how.keepBoundary = false;
-    pieces = splitEdges(edges, {}, how).openPieces;
+    BooleanSpec spec;
+    spec.binary = true;
+    spec.op = ClipOp::Union;
+    spec.clipRule = region.rule;
+    spec.keepBoundary = false;
+    pieces = splitEdges(edges, {}, spec, workspace).openPieces;
   }
 
   LineAssembler assembler(pieces, lineEdges, part, grid);
@@ -169,6 +167,20 @@ Paths clipLines(const Paths& lines, const Paths& region, FillRule regionRule, Li
     assembler.assemble(edges, firstEdge[i], firstEdge[i + 1], out);
   }
   return out;
+}
+
+}  // namespace detail
+
+Paths clipLines(const Paths& lines, const Paths& region, FillRule regionRule, LinePart part,
+                const Grid& grid) {
+  // Lines are read first (their errors come first); region paths are operand 1 so that errors
+  // name them "clip".
+  std::vector<detail::InputEdge> edges;
+  std::vector<std::size_t> firstEdge;
+  detail::appendLineEdges(lines, grid, edges, firstEdge);
+  const detail::SnappedOperand snapped = detail::snapOperand(region, 1, regionRule, grid);
+  const detail::WorkspaceLease workspace;
+  return detail::clipLinesSnapped(edges, firstEdge, snapped, part, grid, *workspace);
 }
 
 const char* toString(LinePart part) { return part == LinePart::Inside ? "inside" : "outside"; }

@@ -16,18 +16,12 @@
 #include <roiclip/error.hpp>
 
 #include "pipeline.hpp"
+#include "workspace.hpp"
 
 namespace roiclip::detail {
 namespace {
 
-// A vertex of a path being clipped and the supporting segment of the edge leaving it.
-struct Vertex {
-  XPoint p;
-  IPoint lineA, lineB;
-};
-
-// The path being clipped and the next one, kept per thread between calls (see recycle()).
-thread_local std::vector<Vertex> tPath, tNext;
+using Vertex = ClipVertex;
 
 XPoint crossing(const Vertex& from, IPoint hA, IPoint hB) {
   XPoint x;
@@ -68,11 +62,6 @@ void clipHalfPlane(const std::vector<Vertex>& in, IPoint hA, IPoint hB, std::vec
 
 }  // namespace
 
-void releasePreclipBuffers() {
-  std::vector<Vertex>().swap(tPath);
-  std::vector<Vertex>().swap(tNext);
-}
-
 int convexOrientation(const std::vector<IPoint>& ring) {
   const std::size_t n = ring.size();
   if (n < 3) return 0;
@@ -108,9 +97,14 @@ int convexOrientation(const std::vector<IPoint>& ring) {
   return xFlips <= 2 && yFlips <= 2 ? turn : 0;
 }
 
-void preclipConvex(const std::vector<std::vector<IPoint>>& rings,
-                   const std::vector<IPoint>& convexRing, std::vector<ExactEdge>& out) {
-  const int orientation = convexOrientation(convexRing);
+void preclipConvex(const Rings& rings, const std::vector<IPoint>& convexRing,
+                   std::vector<ExactEdge>& out) {
+  const WorkspaceLease workspace;
+  preclipConvex(rings, convexRing, convexOrientation(convexRing), *workspace, out);
+}
+
+void preclipConvex(const Rings& rings, const std::vector<IPoint>& convexRing, int orientation,
+                   Workspace& workspace, std::vector<ExactEdge>& out) {
   if (orientation == 0) throw InternalError("preclipConvex: clip ring is not convex");
   std::vector<IPoint> clipRing = convexRing;
   if (orientation < 0) std::reverse(clipRing.begin(), clipRing.end());  // inside on the left
@@ -121,9 +115,8 @@ void preclipConvex(const std::vector<std::vector<IPoint>>& rings,
   for (const std::vector<IPoint>& ring : rings) vertexCount += ring.size();
   out.clear();
   out.reserve(vertexCount + 16);
-  std::vector<Vertex>& path = tPath;
-  std::vector<Vertex>& next = tNext;
-  const RecycleOnExit<Vertex> recyclePath(path), recycleNext(next);
+  std::vector<Vertex>& path = workspace.path;
+  std::vector<Vertex>& next = workspace.next;
   const std::size_t sides = clipRing.size();
   for (const std::vector<IPoint>& ring : rings) {
     // Rings entirely inside every half-plane pass unchanged; rings entirely outside one of them
@@ -168,6 +161,9 @@ void preclipConvex(const std::vector<std::vector<IPoint>>& rings,
       out.push_back(e);
     }
   }
+  // Not kept through the sweep that follows: at 1M vertices these two are 190 MB of the peak.
+  recycle(path);
+  recycle(next);
 }
 
 }  // namespace roiclip::detail

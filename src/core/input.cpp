@@ -100,7 +100,11 @@ std::vector<std::vector<IPoint>> snapRings(const Paths& paths, int operand, cons
 
 void appendInputEdges(const Paths& paths, int operand, const Grid& grid,
                       std::vector<InputEdge>& out) {
-  for (const std::vector<IPoint>& ring : snapRings(paths, operand, grid)) {
+  appendRingEdges(snapRings(paths, operand, grid), operand, out);
+}
+
+void appendRingEdges(const Rings& rings, int operand, std::vector<InputEdge>& out) {
+  for (const std::vector<IPoint>& ring : rings) {
     for (std::size_t i = 0; i < ring.size(); ++i) {
       const IPoint s = ring[i];
       const IPoint t = ring[(i + 1) % ring.size()];

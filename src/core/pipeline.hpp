@@ -8,41 +8,13 @@
 #include <vector>
 
 #include <roiclip/geometry.hpp>
+#include <roiclip/roiclip.hpp>
 
 #include "predicates.hpp"
 
 namespace roiclip::detail {
 
-/// The pipeline's large per-edge working arrays are kept per thread between calls: allocating
-/// them afresh costs a page fault per 4 KiB touched, which on a 100k-vertex contour took about
-/// as long as the clipping itself. recycle() empties such an array after use and keeps its
-/// capacity up to kKeptScratchBytes; a larger one is freed.
-constexpr std::size_t kKeptScratchBytes = std::size_t(64) << 20;
-template <class T>
-void recycle(std::vector<T>& v) {
-  if (v.capacity() * sizeof(T) > kKeptScratchBytes) {
-    std::vector<T>().swap(v);
-  } else {
-    v.clear();
-  }
-}
-
-/// recycle() at scope exit, also when the scope is left by an exception.
-template <class T>
-class RecycleOnExit {
- public:
-  explicit RecycleOnExit(std::vector<T>& v) : v_(v) {}
-  RecycleOnExit(const RecycleOnExit&) = delete;
-  RecycleOnExit& operator=(const RecycleOnExit&) = delete;
-  ~RecycleOnExit() { recycle(v_); }
-
- private:
-  std::vector<T>& v_;
-};
-
-/// Free the arrays one stage keeps for this thread (roiclip::releaseThreadBuffers()).
-void releaseSweepBuffers();
-void releasePreclipBuffers();
+struct Workspace;  // workspace.hpp: every array kept between calls
 
 /// Operand index: 0 = subject, 1 = clip.
 constexpr int kOperands = 2;
@@ -70,6 +42,12 @@ struct ExactEdge {
 void appendInputEdges(const Paths& paths, int operand, const Grid& grid,
                       std::vector<InputEdge>& out);
 
+/// Closed rings of grid points, as snapRings() makes them.
+using Rings = std::vector<std::vector<IPoint>>;
+
+/// The edges of already snapped rings (input.cpp; appendInputEdges() is snapRings() + this).
+void appendRingEdges(const Rings& rings, int operand, std::vector<InputEdge>& out);
+
 /// Stage 0 for open polylines (input.cpp): validate and snap each polyline, drop repeated points
 /// and vertices where it goes straight on, and emit its segments as open edges in path order.
 /// `firstEdge` receives, per polyline, the index in `out` of its first segment (plus one
@@ -80,23 +58,45 @@ void appendLineEdges(const Paths& lines, const Grid& grid, std::vector<InputEdge
 /// Which side of a piece is filled in the result.
 enum class Side : std::uint8_t { None = 0, Above = 1, Below = 2 };
 
-/// What the boolean combination of the operands is.
-struct Combination {
+/// What the boolean combination of the operands is: the operation and each operand's fill rule.
+struct BooleanSpec {
   bool binary = false;  ///< false: subject only (simplify)
   /// false: only open pieces are wanted (clipLines), the region's own boundary is not stored
   bool keepBoundary = true;
   ClipOp op = ClipOp::Intersection;
   FillRule subjectRule = FillRule::EvenOdd;
   FillRule clipRule = FillRule::EvenOdd;
-  [[nodiscard]] bool inside(const Windings& w) const;
+  /// Whether a point with these winding numbers is in the result. (Inline: the sweep asks this
+  /// twice for every piece.)
+  [[nodiscard]] bool inside(const Windings& w) const {
+    const bool s = isFilled(subjectRule, w[0]);
+    if (!binary) return s;
+    const bool c = isFilled(clipRule, w[1]);
+    switch (op) {
+      case ClipOp::Intersection:
+        return s && c;
+      case ClipOp::Union:
+        return s || c;
+      case ClipOp::Difference:
+        return s && !c;
+      case ClipOp::Xor:
+        return s != c;
+    }
+    return false;
+  }
 };
 
 /// Stage 2 (classify.cpp): from the winding numbers just below a piece and its contribution,
 /// the fill rules and the operation decide whether the piece bounds the result and on which
 /// side the result lies. Pieces between regions of equal status (the paper's "edges inside
 /// holes") get Side::None and are not kept.
-Side classifyPiece(const Windings& below, const Windings& contribution,
-                   const Combination& combination);
+inline Side classifyPiece(const Windings& below, const Windings& contribution,
+                          const BooleanSpec& spec) {
+  const bool in = spec.inside(below);
+  const bool above = spec.inside({below[0] + contribution[0], below[1] + contribution[1]});
+  if (in == above) return Side::None;
+  return above ? Side::Above : Side::Below;
+}
 
 /// Where a piece of an open polyline lies relative to the region.
 enum class LinePlace : std::uint8_t {
@@ -107,8 +107,7 @@ enum class LinePlace : std::uint8_t {
 
 /// Stage 2 for open pieces (classify.cpp): from the winding numbers on the two sides of the
 /// closed pieces coincident with an open piece (equal when there are none).
-LinePlace classifyOpenPiece(const Windings& below, const Windings& above,
-                            const Combination& combination);
+LinePlace classifyOpenPiece(const Windings& below, const Windings& above, const BooleanSpec& spec);
 
 /// A piece of one open input segment between two consecutive event points on it.
 struct OpenPiece {
@@ -151,7 +150,11 @@ struct Arrangement {
 /// with the winding numbers on both sides and keeps the ones stage 2 classifies as result
 /// boundary. O((n + k) log n) time for n edges and k crossings.
 Arrangement splitEdges(const std::vector<InputEdge>& edges,
-                       const std::vector<ExactEdge>& exactEdges, const Combination& combination);
+                       const std::vector<ExactEdge>& exactEdges, const BooleanSpec& spec,
+                       Workspace& workspace);
+/// The same on the calling thread's workspace.
+Arrangement splitEdges(const std::vector<InputEdge>& edges,
+                       const std::vector<ExactEdge>& exactEdges, const BooleanSpec& spec);
 
 /// A closed ring traced from result pieces, filled on its left.
 struct TracedRing {
@@ -181,15 +184,40 @@ int convexOrientation(const std::vector<IPoint>& ring);
 /// ring, exactly. Inside the ring, every winding number of `rings` is preserved; outside it,
 /// every winding number becomes 0. Output edges lie on integer input or clip segments; `out` is
 /// cleared first.
-void preclipConvex(const std::vector<std::vector<IPoint>>& rings,
-                   const std::vector<IPoint>& convexRing, std::vector<ExactEdge>& out);
+/// `orientation` is convexOrientation(convexRing), computed once by the caller.
+void preclipConvex(const Rings& rings, const std::vector<IPoint>& convexRing, int orientation,
+                   Workspace& workspace, std::vector<ExactEdge>& out);
+/// The same on the calling thread's workspace, computing the orientation.
+void preclipConvex(const Rings& rings, const std::vector<IPoint>& convexRing,
+                   std::vector<ExactEdge>& out);
 
 /// Stage 4 (nesting.cpp): give each hole its outer ring and each outer ring the hole it lies
 /// in, and emit the polygons in image coordinates with roiclip's output orientation.
 PolygonSet buildNesting(const Arrangement& arrangement, const Contours& contours, const Grid& grid);
 
 /// The general path (every operation, no convex shortcut): stages 0 to 4.
-PolygonSet booleanGeneral(const Paths& subject, const Paths* clipPaths, const Combination& how,
+PolygonSet booleanGeneral(const Paths& subject, const Paths* clipPaths, const BooleanSpec& spec,
                           const Grid& grid);
+
+/// One operand, snapped and validated once: its rings, its fill rule, and the orientation of
+/// its ring when it is a single strictly convex one (convexOrientation(), else 0).
+struct SnappedOperand {
+  Rings rings;
+  FillRule rule = FillRule::EvenOdd;
+  int convex = 0;
+};
+SnappedOperand snapOperand(const Paths& paths, int operand, FillRule rule, const Grid& grid);
+
+/// clip() on snapped operands (boolean_op.cpp): the convex fast path for an intersection with a
+/// convex operand, else the general path. On the general path the subject's rings are freed
+/// once read.
+PolygonSet clipSnapped(ClipOp op, SnappedOperand& subject, const SnappedOperand& clip,
+                       const Grid& grid, Workspace& workspace);
+
+/// clipLines() on a snapped region (clip_lines.cpp): `edges` holds the polylines' edges from
+/// appendLineEdges() (the region's are appended), `firstEdge` where each polyline starts.
+Paths clipLinesSnapped(std::vector<InputEdge>& edges, const std::vector<std::size_t>& firstEdge,
+                       const SnappedOperand& region, LinePart part, const Grid& grid,
+                       Workspace& workspace);
 
 }  // namespace roiclip::detail

@@ -54,6 +54,7 @@ struct XPoint {
         fx(pw == 1 ? double(px) : double(px) / double(pw)),
         fy(pw == 1 ? double(py) : double(py) / double(pw)) {}
   explicit XPoint(IPoint p) : x(p.x), y(p.y), w(1), fx(double(p.x)), fy(double(p.y)) {}
+  // Same as fx, fy: nesting.cpp's output conversion still reads them (its owner changes it).
   [[nodiscard]] double dx() const { return fx; }
   [[nodiscard]] double dy() const { return fy; }
 };
@@ -73,12 +74,12 @@ inline int orient(IPoint a, IPoint b, IPoint c) {
 inline int orient(IPoint a, IPoint b, const XPoint& c) {
   if (c.w == 1) return orient(a, b, IPoint{std::int64_t(c.x), std::int64_t(c.y)});
   const double ux = double(b.x - a.x), uy = double(b.y - a.y);
-  const double cx = c.dx() - double(a.x), cy = c.dy() - double(a.y);
+  const double cx = c.fx - double(a.x), cy = c.fy - double(a.y);
   const double v = ux * cy - uy * cx;
-  // c.dx(), c.dy() carry a relative error below 2^-51; the bound covers that and the rounding of
+  // c.fx, c.fy carry a relative error below 2^-51; the bound covers that and the rounding of
   // the subtractions and products with a wide margin.
-  const double bound = 1e-13 * (std::fabs(ux) * (std::fabs(c.dy()) + std::fabs(double(a.y))) +
-                                std::fabs(uy) * (std::fabs(c.dx()) + std::fabs(double(a.x))) + 1.0);
+  const double bound = 1e-13 * (std::fabs(ux) * (std::fabs(c.fy) + std::fabs(double(a.y))) +
+                                std::fabs(uy) * (std::fabs(c.fx) + std::fabs(double(a.x))) + 1.0);
   if (v > bound) return 1;
   if (v < -bound) return -1;
   // Exact in 128 bits: |X|, |Y| < 3 * 2^93 and |a * W| <= 2^93, so |ex|, |ey| < 2^95.4, and

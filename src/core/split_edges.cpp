@@ -12,109 +12,94 @@
 //
 // Cost: O((n + k) log n) time for n edges and k intersection points, O(n + k) memory.
 #include <algorithm>
-#include <queue>
-#include <set>
 
 #include <boost/sort/pdqsort/pdqsort.hpp>
 
 #include <roiclip/error.hpp>
 
 #include "pipeline.hpp"
+#include "workspace.hpp"
 
 namespace roiclip::detail {
 namespace {
 
-struct Active {
-  XPoint left, right;
-  IPoint lineA, lineB;
-  Windings contribution{};
-  Windings windBelow{};
-  int slot = -1;          // index of its output piece (result pieces only) while in the status
-  int resultBelow = -1;   // nearest result piece below it when it was inserted
-  int checkedAbove = -1;  // the last piece above it tested for a crossing (see checkCrossing)
-  bool open = false;      // a piece of an open polyline (zero contribution, never merged)
-  LinePlace place = LinePlace::Outside;  // open pieces: where it lies
-  [[nodiscard]] int nearestResult() const { return slot >= 0 ? slot : resultBelow; }
-  [[nodiscard]] IPoint direction() const { return {lineB.x - lineA.x, lineB.y - lineA.y}; }
-};
-
-struct Event {
-  XPoint point;
-  int piece = -1;    // -1: visit the point only
-  int through = -1;  // a crossing: one of the two pieces crossing there (locates p in the status)
-};
-
+// Earliest point first in the event heap (std::push_heap keeps the largest on top).
 struct EventAfter {
-  bool operator()(const Event& a, const Event& b) const { return less(b.point, a.point); }
+  bool operator()(const SweepEvent& a, const SweepEvent& b) const { return less(b.point, a.point); }
 };
+
+// q == p for a grid point q: grid points always have W == 1 (lineIntersection() stores
+// crossings on the grid so), so an off-grid p never equals q.
+inline bool atGridPoint(const XPoint& p, IPoint q) { return p.w == 1 && p.x == q.x && p.y == q.y; }
 
 class Sweep {
  public:
   Sweep(const std::vector<InputEdge>& edges, const std::vector<ExactEdge>& exactEdges,
-        const Combination& how)
-      : how_(how), status_(StatusLess{&active_}) {
+        const BooleanSpec& spec, Workspace& ws)
+      : spec_(spec),
+        pieces_(ws.pieces),
+        starts_(ws.starts),
+        queue_(ws.queue),
+        starting_(ws.starting),
+        through_(ws.through),
+        nodes_(ws.nodes),
+        freeNodes_(ws.freeNodes),
+        status_(StatusLess{&pieces_}) {
     const std::size_t total = edges.size() + exactEdges.size();
-    active_.clear();
-    initial_.clear();
-    active_.reserve(total);
-    where_.resize(total);
-    inStatus_.assign(total, 0);
-    initial_.reserve(edges.size() * 2);
+    // The status links pieces by address: the array must not move while the sweep runs.
+    pieces_.clear();
+    pieces_.reserve(total);
+    starts_.clear();
+    queue_.clear();
+    nodes_.clear();
+    freeNodes_.clear();
+    starts_.reserve(edges.size() * 2);
     for (const InputEdge& e : edges) {
-      Active a;
+      SweepPiece a;
       a.left = XPoint(e.a);
       a.right = XPoint(e.b);
       a.lineA = e.a;
       a.lineB = e.b;
       a.contribution[e.operand] = e.open ? 0 : e.direction;
       a.open = e.open;
-      initial_.push_back({e.a, int(active_.size()), false});
-      initial_.push_back({e.b, int(active_.size()), true});
-      active_.push_back(a);
+      starts_.push_back({e.a, int(pieces_.size()), false});
+      starts_.push_back({e.b, int(pieces_.size()), true});
+      pieces_.push_back(a);
     }
-    // Edges with off-grid ends start from the dynamic queue; their ends are plain events.
+    // Edges with off-grid ends start from the event queue; their ends are plain events.
     for (const ExactEdge& e : exactEdges) {
-      Active a;
+      SweepPiece a;
       a.left = e.left;
       a.right = e.right;
       a.lineA = e.lineA;
       a.lineB = e.lineB;
       a.contribution[e.operand] = e.direction;
-      const int id = int(active_.size());
+      const int id = int(pieces_.size());
       if (e.left.w == 1) {
-        initial_.push_back({{std::int64_t(e.left.x), std::int64_t(e.left.y)}, id, false});
+        starts_.push_back({{std::int64_t(e.left.x), std::int64_t(e.left.y)}, id, false});
       } else {
-        queue_.push({e.left, id});
+        push({e.left, id});
       }
       if (e.right.w == 1) {
-        initial_.push_back({{std::int64_t(e.right.x), std::int64_t(e.right.y)}, id, true});
+        starts_.push_back({{std::int64_t(e.right.x), std::int64_t(e.right.y)}, id, true});
       } else {
-        queue_.push({e.right, -1});
+        push({e.right, -1});
       }
-      active_.push_back(a);
+      pieces_.push_back(a);
     }
     // pdqsort: on the ends of a contour's edges (x rising and falling along the blob) std::sort's
     // median-of-3 quicksort hit its depth limit and fell back to heapsort, 18% of the 100k
     // contour x quad row.
     boost::sort::pdqsort(
-        initial_.begin(), initial_.end(),
-        [](const InitialEvent& a, const InitialEvent& b) { return a.point < b.point; });
+        starts_.begin(), starts_.end(),
+        [](const SweepStart& a, const SweepStart& b) { return a.point < b.point; });
     out_.pieces.reserve(total / 4 + 16);
     out_.vertices.reserve(total / 4 + 16);
   }
 
-  /// Frees the arrays this thread keeps (releaseThreadBuffers()).
-  static void releaseBuffers() { threadBuffers() = Buffers{}; }
-
   Sweep(const Sweep&) = delete;
   Sweep& operator=(const Sweep&) = delete;
-  ~Sweep() {          // the arrays are recycled also when the sweep throws
-    status_.clear();  // before the node handles in where_ are dropped
-    recycle(active_);
-    recycle(initial_);
-    recycle(where_);
-    recycle(inStatus_);
-  }
+  ~Sweep() { status_.clear(); }  // the lease recycles the arrays, also when the sweep throws
 
   Arrangement run() {
     XPoint p;
@@ -128,11 +113,10 @@ class Sweep {
   // to the left of the sweep point, so comparing where the later-starting piece begins against
   // the other's supporting line is enough.
   struct StatusLess {
-    using is_transparent = void;
-    const std::vector<Active>* active;
-    bool operator()(int a, int b) const {
-      const Active& pa = (*active)[a];
-      const Active& pb = (*active)[b];
+    const std::vector<SweepPiece>* pieces;
+    bool operator()(const StatusNode& na, const StatusNode& nb) const {
+      const SweepPiece& pa = (*pieces)[std::size_t(na.piece)];
+      const SweepPiece& pb = (*pieces)[std::size_t(nb.piece)];
       const int c = compare(pa.left, pb.left);
       int o = 0;
       if (c < 0) {
@@ -144,48 +128,49 @@ class Sweep {
       const int s = crossSign(pa.direction(), pb.direction());
       if (s != 0) return s > 0;
       // Coincident: the (single, merged) closed piece below the open ones, as visit() labels.
-      return pa.open != pb.open ? pb.open : a < b;
-    }
-    // Piece below point / point below piece, for finding the pieces through a point.
-    bool operator()(int a, const XPoint& p) const {
-      const Active& pa = (*active)[a];
-      return orient(pa.lineA, pa.lineB, p) > 0;
-    }
-    bool operator()(const XPoint& p, int a) const {
-      const Active& pa = (*active)[a];
-      return orient(pa.lineA, pa.lineB, p) < 0;
+      return pa.open != pb.open ? pb.open : na.piece < nb.piece;
     }
   };
-  using Status = std::set<int, StatusLess>;
+  // Piece below point / point below piece, for finding the pieces through a point.
+  struct PointLess {
+    const std::vector<SweepPiece>* pieces;
+    bool operator()(const StatusNode& n, const XPoint& p) const {
+      const SweepPiece& a = (*pieces)[std::size_t(n.piece)];
+      return orient(a.lineA, a.lineB, p) > 0;
+    }
+    bool operator()(const XPoint& p, const StatusNode& n) const {
+      const SweepPiece& a = (*pieces)[std::size_t(n.piece)];
+      return orient(a.lineA, a.lineB, p) < 0;
+    }
+  };
+  using Status = boost::intrusive::set<
+      StatusNode, boost::intrusive::member_hook<StatusNode, StatusHook, &StatusNode::hook>,
+      boost::intrusive::compare<StatusLess>, boost::intrusive::constant_time_size<false>>;
+  using Node = Status::iterator;
 
-  struct InitialEvent {
-    IPoint point;
-    int piece;
-    bool end;  // the right end of `piece` (a hint: the piece may have been merged away)
-  };
+  SweepPiece& piece(Node it) { return pieces_[std::size_t(it->piece)]; }
+  static int nodeIndex(Node it) { return it->self; }
 
-  // The per-edge working arrays, kept per thread between sweeps (see recycle()).
-  struct Buffers {
-    std::vector<Active> active;
-    std::vector<InitialEvent> initial;
-    std::vector<Status::iterator> where;
-    std::vector<char> inStatus;
-  };
-  static Buffers& threadBuffers() {
-    thread_local Buffers buffers;
-    return buffers;
+  void push(const SweepEvent& e) {
+    queue_.push_back(e);
+    std::push_heap(queue_.begin(), queue_.end(), EventAfter{});
   }
+  void pop() {
+    std::pop_heap(queue_.begin(), queue_.end(), EventAfter{});
+    queue_.pop_back();
+  }
+  [[nodiscard]] const SweepEvent& top() const { return queue_.front(); }
 
   bool nextPoint(XPoint& p) const {
-    const bool hasInitial = cursor_ < initial_.size();
-    if (!hasInitial && queue_.empty()) return false;
-    if (!hasInitial) {
-      p = queue_.top().point;
+    const bool hasStart = cursor_ < starts_.size();
+    if (!hasStart && queue_.empty()) return false;
+    if (!hasStart) {
+      p = top().point;
     } else if (queue_.empty()) {
-      p = XPoint(initial_[cursor_].point);
+      p = XPoint(starts_[cursor_].point);
     } else {
-      const XPoint a(initial_[cursor_].point);
-      p = less(queue_.top().point, a) ? queue_.top().point : a;
+      const XPoint a(starts_[cursor_].point);
+      p = less(top().point, a) ? top().point : a;
     }
     return true;
   }
@@ -200,74 +185,102 @@ class Sweep {
     return vertex_;
   }
 
+  // One event point p: every active piece through p is cut there, the pieces leaving p are
+  // merged where coincident, labelled and put in the status, and new neighbours are tested.
   void visit(const XPoint& p) {
     vertex_ = -1;
-    starts_.clear();
-    int locator = -1;  // a piece known to pass through p, if any: its status node locates p
-    while (cursor_ < initial_.size() && equal(XPoint(initial_[cursor_].point), p)) {
-      const InitialEvent& ev = initial_[cursor_];
+    starting_.clear();
+    const int locator = takeEventsAt(p);
+    const auto [lo, hi] = piecesThrough(p, locator);
+    const int below = lo == status_.begin() ? -1 : std::prev(lo)->piece;
+    cutAt(lo, hi, p);
+    mergeCoincident();
+    insertStarting(lo, hi, below, p);
+    const int above = hi == status_.end() ? -1 : hi->piece;
+    if (starting_.empty()) {
+      checkCrossing(below, above, p);
+    } else {
+      checkCrossing(below, starting_.front(), p);
+      checkCrossing(starting_.back(), above, p);
+    }
+  }
+
+  // Takes every start and queued event at p: pieces starting at p go to starting_. Returns a
+  // piece known to pass through p, if any (its status node locates p without a search), else -1.
+  int takeEventsAt(const XPoint& p) {
+    int locator = -1;
+    while (cursor_ < starts_.size() && atGridPoint(p, starts_[cursor_].point)) {
+      const SweepStart& ev = starts_[cursor_];
       if (!ev.end) {
-        starts_.push_back(ev.piece);
-      } else if (inStatus_[ev.piece] && equal(active_[ev.piece].right, p)) {
+        starting_.push_back(ev.piece);
+      } else if (pieces_[ev.piece].node >= 0 && equal(pieces_[ev.piece].right, p)) {
         locator = ev.piece;
       }
       ++cursor_;
     }
-    while (!queue_.empty() && equal(queue_.top().point, p)) {
-      const Event& ev = queue_.top();
-      if (ev.piece >= 0) starts_.push_back(ev.piece);
+    while (!queue_.empty() && equal(top().point, p)) {
+      const SweepEvent& ev = top();
+      if (ev.piece >= 0) starting_.push_back(ev.piece);
       // A piece still in the status whose line passes through p goes through p (it started
-      // before p and ends at or after it): its node locates p without a search.
-      if (locator < 0 && ev.through >= 0 && inStatus_[ev.through] &&
-          orient(active_[ev.through].lineA, active_[ev.through].lineB, p) == 0) {
+      // before p and ends at or after it).
+      if (locator < 0 && ev.through >= 0 && pieces_[ev.through].node >= 0 &&
+          orient(pieces_[ev.through].lineA, pieces_[ev.through].lineB, p) == 0) {
         locator = ev.through;
       }
-      queue_.pop();
+      pop();
     }
+    return locator;
+  }
 
-    // Every active piece through p ends here; the ones that go on are cut and re-inserted.
-    // The pieces through p are contiguous in the status.
-    auto passes = [&](Status::iterator it) {
-      return orient(active_[*it].lineA, active_[*it].lineB, p) == 0;
+  // The pieces through p are contiguous in the status: [lo, hi).
+  std::pair<Node, Node> piecesThrough(const XPoint& p, int locator) {
+    const auto passes = [&](Node it) {
+      const SweepPiece& a = piece(it);
+      return orient(a.lineA, a.lineB, p) == 0;
     };
-    Status::iterator lo, hi;
+    Node lo, hi;
     if (locator >= 0) {
-      lo = where_[locator];
+      lo = status_.iterator_to(nodes_[std::size_t(pieces_[locator].node)]);
       hi = std::next(lo);
       while (lo != status_.begin() && passes(std::prev(lo))) --lo;
     } else {
-      lo = status_.lower_bound(p);
+      lo = status_.lower_bound(p, PointLess{&pieces_});
       hi = lo;
     }
     while (hi != status_.end() && passes(hi)) ++hi;
-    const int belowPiece = lo == status_.begin() ? -1 : *std::prev(lo);
-    through_.assign(lo, hi);
-    for (int id : through_) {
-      Active& a = active_[id];
-      inStatus_[id] = 0;
+    return {lo, hi};
+  }
+
+  // Every piece through p ends here: its result piece gets p as right end, and the ones that go
+  // on start again at p. Their nodes stay in the tree for insertStarting() to reuse or drop.
+  void cutAt(Node lo, Node hi, const XPoint& p) {
+    through_.clear();
+    for (Node it = lo; it != hi; ++it) through_.push_back(it->piece);
+    for (int i : through_) {
+      SweepPiece& a = pieces_[i];
+      a.node = -1;
       if (a.slot >= 0) out_.pieces[a.slot].right = vertexHere(p);
-      if (a.open) out_.openPieces.push_back({id, a.left, p, a.place});
+      if (a.open) out_.openPieces.push_back({i, a.left, p, a.place});
       if (!equal(a.right, p)) {
         a.left = p;
-        starts_.push_back(id);
+        starting_.push_back(i);
       }
     }
+  }
 
-    mergeCoincident();
-
-    // The pieces starting at p take the status positions of the pieces through p: every one of
-    // them lies between belowPiece and the piece above, so the nodes [lo, hi) are reused in
-    // order (a chain going on, two pieces crossing), and only the surplus is erased or inserted.
-    auto node = lo;
-
-    // Insert bottom to top, labelling winding numbers from the piece below; keep only the
-    // pieces that bound the result (stage 2, classify, decides).
-    Windings wind = belowPiece >= 0 ? windAbove(active_[belowPiece]) : Windings{};
-    int resultBelow = belowPiece >= 0 ? active_[belowPiece].nearestResult() : -1;
+  // Labels the pieces starting at p bottom to top with the winding numbers from the piece
+  // below, keeps the ones stage 2 (classify) says bound the result, and puts them in the status
+  // in place of the pieces through p: every one of them lies between `below` and hi, so the
+  // nodes [lo, hi) are reused in order (a chain going on, two pieces crossing) and only the
+  // surplus is unlinked or linked, without comparisons.
+  void insertStarting(Node lo, Node hi, int below, const XPoint& p) {
+    Windings wind = below >= 0 ? pieces_[below].windAbove() : Windings{};
+    int resultBelow = below >= 0 ? pieces_[below].nearestResult() : -1;
     int closedRun = -1;  // the last closed piece inserted here, and the winding below it
     Windings closedRunBelow{};
-    for (int id : starts_) {
-      Active& a = active_[id];
+    Node node = lo;  // the first node of [lo, hi) not yet holding a starting piece
+    for (int i : starting_) {
+      SweepPiece& a = pieces_[i];
       a.windBelow = wind;
       a.resultBelow = resultBelow;
       a.slot = -1;
@@ -275,88 +288,98 @@ class Sweep {
         // An open piece coincident with the closed piece just below it lies on that piece:
         // the region's winding numbers on its two sides are the ones around that piece.
         const bool onClosed =
-            closedRun >= 0 && crossSign(active_[closedRun].direction(), a.direction()) == 0;
-        a.place = classifyOpenPiece(onClosed ? closedRunBelow : wind, wind, how_);
+            closedRun >= 0 && crossSign(pieces_[closedRun].direction(), a.direction()) == 0;
+        a.place = classifyOpenPiece(onClosed ? closedRunBelow : wind, wind, spec_);
       } else {
-        closedRun = id;
+        closedRun = i;
         closedRunBelow = wind;
       }
       const Side side =
-          a.open || !how_.keepBoundary ? Side::None : classifyPiece(wind, a.contribution, how_);
+          a.open || !spec_.keepBoundary ? Side::None : classifyPiece(wind, a.contribution, spec_);
       if (side != Side::None) {
         a.slot = int(out_.pieces.size());
-        EdgePiece piece;
-        piece.left = vertexHere(p);
-        piece.lineA = a.lineA;
-        piece.lineB = a.lineB;
-        piece.contribution = a.contribution;
-        piece.windBelow = wind;
-        piece.below = resultBelow;
-        out_.pieces.push_back(piece);
+        EdgePiece kept;
+        kept.left = vertexHere(p);
+        kept.lineA = a.lineA;
+        kept.lineB = a.lineB;
+        kept.contribution = a.contribution;
+        kept.windBelow = wind;
+        kept.below = resultBelow;
+        out_.pieces.push_back(kept);
         out_.sides.push_back(side);
       }
-      wind = windAbove(a);
+      wind = a.windAbove();
       resultBelow = a.nearestResult();
-      if (node != hi) {
-        const_cast<int&>(*node) = id;  // same position in the order, see above
-        where_[id] = node++;
+      if (node != hi) {  // same position in the order, see above
+        node->piece = i;
+        a.node = nodeIndex(node++);
       } else {
-        where_[id] = status_.emplace_hint(hi, id);
+        a.node = newNode(i);
+        status_.insert_before(hi, nodes_[std::size_t(a.node)]);
       }
-      inStatus_[id] = 1;
     }
-    status_.erase(node, hi);
+    while (node != hi) {
+      freeNodes_.push_back(nodeIndex(node));
+      node = status_.erase(node);
+    }
+  }
 
-    const int abovePiece = hi == status_.end() ? -1 : *hi;
-    if (starts_.empty()) {
-      checkCrossing(belowPiece, abovePiece, p);
+  int newNode(int pieceId) {
+    int n;
+    if (!freeNodes_.empty()) {
+      n = freeNodes_.back();
+      freeNodes_.pop_back();
     } else {
-      checkCrossing(belowPiece, starts_.front(), p);
-      checkCrossing(starts_.back(), abovePiece, p);
+      n = int(nodes_.size());
+      nodes_.emplace_back().self = n;
     }
+    nodes_[std::size_t(n)].piece = pieceId;
+    return n;
   }
 
-  static Windings windAbove(const Active& a) {
-    return {a.windBelow[0] + a.contribution[0], a.windBelow[1] + a.contribution[1]};
-  }
-
-  // Sort the pieces in starts_ by direction; merge runs of coincident closed ones into the
+  // Sort the pieces in starting_ by direction; merge runs of coincident closed ones into the
   // shortest and re-start the rest where it ends. Closed pieces whose contributions cancel are
   // dropped: they change no winding number (a spike out and back along itself). Open pieces are
   // never merged or dropped; they follow the closed piece of their direction, as in the status.
   void mergeCoincident() {
-    std::sort(starts_.begin(), starts_.end(), [this](int a, int b) {
-      const int s = crossSign(active_[a].direction(), active_[b].direction());
+    const auto before = [this](int a, int b) {
+      const int s = crossSign(pieces_[a].direction(), pieces_[b].direction());
       if (s != 0) return s > 0;
-      if (active_[a].open != active_[b].open) return active_[b].open;
-      const int c = compare(active_[a].right, active_[b].right);
+      if (pieces_[a].open != pieces_[b].open) return pieces_[b].open;
+      const int c = compare(pieces_[a].right, pieces_[b].right);
       return c != 0 ? c < 0 : a < b;
-    });
+    };
+    // Mostly one piece (a chain going on) or two (a crossing): no sort call for those.
+    if (starting_.size() == 2) {
+      if (before(starting_[1], starting_[0])) std::swap(starting_[0], starting_[1]);
+    } else if (starting_.size() > 2) {
+      std::sort(starting_.begin(), starting_.end(), before);
+    }
     std::size_t kept = 0;
-    for (std::size_t i = 0; i < starts_.size();) {
-      const int first = starts_[i];
+    for (std::size_t i = 0; i < starting_.size();) {
+      const int first = starting_[i];
       std::size_t j = i + 1;
-      while (j < starts_.size() && !active_[starts_[j]].open &&
-             crossSign(active_[first].direction(), active_[starts_[j]].direction()) == 0) {
-        Active& other = active_[starts_[j]];
-        for (int k = 0; k < kOperands; ++k) active_[first].contribution[k] += other.contribution[k];
-        if (!equal(other.right, active_[first].right)) {
-          other.left = active_[first].right;
-          queue_.push({other.left, starts_[j]});
+      while (j < starting_.size() && !pieces_[starting_[j]].open &&
+             crossSign(pieces_[first].direction(), pieces_[starting_[j]].direction()) == 0) {
+        SweepPiece& other = pieces_[starting_[j]];
+        for (int k = 0; k < kOperands; ++k) pieces_[first].contribution[k] += other.contribution[k];
+        if (!equal(other.right, pieces_[first].right)) {
+          other.left = pieces_[first].right;
+          push({other.left, starting_[j]});
         }
         ++j;
       }
-      const Windings& c = active_[first].contribution;
-      if (active_[first].open || c[0] != 0 || c[1] != 0) starts_[kept++] = first;
+      const Windings& c = pieces_[first].contribution;
+      if (pieces_[first].open || c[0] != 0 || c[1] != 0) starting_[kept++] = first;
       i = j;
     }
-    starts_.resize(kept);
+    starting_.resize(kept);
   }
 
   void checkCrossing(int a, int b, const XPoint& p) {
     if (a < 0 || b < 0) return;
-    Active& pa = active_[a];
-    const Active& pb = active_[b];
+    SweepPiece& pa = pieces_[a];
+    const SweepPiece& pb = pieces_[b];
     // A piece keeps its supporting segment and right end when it is cut, so a pair's crossing
     // never changes: testing the same pair again can only find the same event.
     if (pa.checkedAbove == b) return;
@@ -380,32 +403,38 @@ class Sweep {
     const int cb = compare(x, pb.right);
     if (ca > 0 || cb > 0) return;
     if (ca == 0 || cb == 0) return;  // already an event: the end of one of them
-    queue_.push({x, -1, a});
+    queueCrossing(x, a);
   }
 
-  const Combination& how_;
+  // The one place a new crossing becomes an event.
+  void queueCrossing(const XPoint& x, int piece) { push({x, -1, piece}); }
+
+  const BooleanSpec& spec_;
   int vertex_ = -1;
-  Buffers& buffers_ = threadBuffers();
-  std::vector<Active>& active_ = buffers_.active;
-  std::vector<InitialEvent>& initial_ = buffers_.initial;
+  std::vector<SweepPiece>& pieces_;
+  std::vector<SweepStart>& starts_;
   std::size_t cursor_ = 0;
-  std::priority_queue<Event, std::vector<Event>, EventAfter> queue_;
+  std::vector<SweepEvent>& queue_;
+  std::vector<int>& starting_;
+  std::vector<int>& through_;
+  std::deque<StatusNode>& nodes_;
+  std::vector<int>& freeNodes_;
   Status status_;
-  std::vector<Status::iterator>& where_ =
-      buffers_.where;  // status node of each piece while inStatus_
-  std::vector<char>& inStatus_ = buffers_.inStatus;
-  std::vector<int> starts_;
-  std::vector<int> through_;
   Arrangement out_;
 };
 
 }  // namespace
 
-void releaseSweepBuffers() { Sweep::releaseBuffers(); }
+Arrangement splitEdges(const std::vector<InputEdge>& edges,
+                       const std::vector<ExactEdge>& exactEdges, const BooleanSpec& spec,
+                       Workspace& workspace) {
+  return Sweep(edges, exactEdges, spec, workspace).run();
+}
 
 Arrangement splitEdges(const std::vector<InputEdge>& edges,
-                       const std::vector<ExactEdge>& exactEdges, const Combination& how) {
-  return Sweep(edges, exactEdges, how).run();
+                       const std::vector<ExactEdge>& exactEdges, const BooleanSpec& spec) {
+  const WorkspaceLease workspace;
+  return splitEdges(edges, exactEdges, spec, *workspace);
 }
 
 }  // namespace roiclip::detail

@@ -118,7 +118,7 @@ TEST(ConvexPath, SameRegionAsGeneralPath) {
     ++convexClips;
     for (FillRule rs : kRules) {
       for (FillRule rc : kRules) {
-        detail::Combination how;
+        detail::BooleanSpec how;
         how.binary = true;
         how.op = ClipOp::Intersection;
         how.subjectRule = rs;

@@ -16,14 +16,14 @@ namespace roiclip::stages {
 /// Grid{1}: grid units are pixels, so arrangement vertices read as the input's points.
 inline const Grid kUnitGrid{1.0};
 
-inline detail::Combination simplifyWith(FillRule rule) {
-  detail::Combination how;
+inline detail::BooleanSpec simplifyWith(FillRule rule) {
+  detail::BooleanSpec how;
   how.subjectRule = rule;
   return how;
 }
 
-inline detail::Combination clipWith(ClipOp op) {
-  detail::Combination how;
+inline detail::BooleanSpec clipWith(ClipOp op) {
+  detail::BooleanSpec how;
   how.binary = true;
   how.op = op;
   return how;
@@ -31,7 +31,7 @@ inline detail::Combination clipWith(ClipOp op) {
 
 /// Stages 0 and 1 (with 2 inside the sweep) of the general path.
 inline detail::Arrangement arrange(const Paths& subject, const Paths* clipPaths,
-                                   const detail::Combination& how, const Grid& grid = kUnitGrid) {
+                                   const detail::BooleanSpec& how, const Grid& grid = kUnitGrid) {
   std::vector<detail::InputEdge> edges;
   detail::appendInputEdges(subject, 0, grid, edges);
   if (clipPaths != nullptr) detail::appendInputEdges(*clipPaths, 1, grid, edges);
@@ -57,7 +57,7 @@ inline std::pair<Point, Point> sidePoints(const detail::Arrangement& a, const de
                                           double d) {
   const detail::XPoint& l = a.vertices[std::size_t(p.left)];
   const detail::XPoint& r = a.vertices[std::size_t(p.right)];
-  const Point mid((l.dx() + r.dx()) / 2, (l.dy() + r.dy()) / 2);
+  const Point mid((l.fx + r.fx) / 2, (l.fy + r.fy) / 2);
   if (p.lineA.x == p.lineB.x) return {mid + Point(d, 0), mid - Point(d, 0)};
   return {mid - Point(0, d), mid + Point(0, d)};
 }
@@ -69,7 +69,7 @@ inline double rawSignedArea(const detail::Arrangement& a, const detail::TracedRi
     const detail::XPoint& p = a.vertices[std::size_t(ring.vertices[i])];
     const detail::XPoint& q =
         a.vertices[std::size_t(ring.vertices[(i + 1) % ring.vertices.size()])];
-    twice += p.dx() * q.dy() - q.dx() * p.dy();
+    twice += p.fx * q.fy - q.fx * p.fy;
   }
   return twice / 2;
 }

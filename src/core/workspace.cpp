@@ -1,0 +1,71 @@
+// SPDX-License-Identifier: MIT
+// The one workspace: per-thread instance, lease with re-entry guard, recycling.
+#include "workspace.hpp"
+
+namespace roiclip::detail {
+namespace {
+
+Workspace& threadWorkspace() {
+  thread_local Workspace workspace;
+  return workspace;
+}
+
+}  // namespace
+
+void Workspace::recycleAll() {
+  recycle(pieces);
+  recycle(starts);
+  recycle(queue);
+  if (nodes.size() * sizeof(StatusNode) > kKeptScratchBytes) {
+    std::deque<StatusNode>().swap(nodes);
+  } else {
+    nodes.clear();
+  }
+  recycle(freeNodes);
+  recycle(starting);
+  recycle(through);
+  recycle(path);
+  recycle(next);
+  recycle(clipped);
+  recycle(edges);
+}
+
+void Workspace::release() {
+  std::vector<SweepPiece>().swap(pieces);
+  std::vector<SweepStart>().swap(starts);
+  std::vector<SweepEvent>().swap(queue);
+  std::deque<StatusNode>().swap(nodes);
+  std::vector<int>().swap(freeNodes);
+  std::vector<int>().swap(starting);
+  std::vector<int>().swap(through);
+  std::vector<ClipVertex>().swap(path);
+  std::vector<ClipVertex>().swap(next);
+  std::vector<ExactEdge>().swap(clipped);
+  std::vector<InputEdge>().swap(edges);
+}
+
+WorkspaceLease::WorkspaceLease() { acquire(threadWorkspace()); }
+
+WorkspaceLease::WorkspaceLease(Workspace& preferred) { acquire(preferred); }
+
+void WorkspaceLease::acquire(Workspace& preferred) {
+  if (!preferred.busy.exchange(true, std::memory_order_acquire)) {
+    ws_ = &preferred;
+    return;
+  }
+  own_ = std::make_unique<Workspace>();
+  own_->busy.store(true, std::memory_order_relaxed);
+  ws_ = own_.get();
+}
+
+WorkspaceLease::~WorkspaceLease() {
+  ws_->recycleAll();
+  ws_->busy.store(false, std::memory_order_release);
+}
+
+void releaseThreadWorkspace() {
+  Workspace& ws = threadWorkspace();
+  if (!ws.busy.load(std::memory_order_acquire)) ws.release();
+}
+
+}  // namespace roiclip::detail

@@ -1,0 +1,134 @@
+// SPDX-License-Identifier: MIT
+// roiclip private header: the one workspace. Every working array the pipeline keeps between
+// calls lives here, in one object: the sweep's pieces, start events and event queue, the convex
+// pre-clip's two path buffers and its output edges. A free function borrows the calling
+// thread's workspace (WorkspaceLease); a PreparedRegion owns its own.
+#pragma once
+
+#include <atomic>
+#include <deque>
+#include <memory>
+#include <vector>
+
+#include <boost/intrusive/set.hpp>
+
+#include "pipeline.hpp"
+
+namespace roiclip::detail {
+
+/// Allocating the per-edge arrays afresh costs a page fault per 4 KiB touched, which on a
+/// 100k-vertex contour took about as long as the clipping itself, so they are kept between
+/// calls. recycle() empties an array after use and keeps its capacity up to kKeptScratchBytes;
+/// a larger one is freed.
+constexpr std::size_t kKeptScratchBytes = std::size_t(64) << 20;
+template <class T>
+void recycle(std::vector<T>& v) {
+  if (v.capacity() * sizeof(T) > kKeptScratchBytes) {
+    std::vector<T>().swap(v);
+  } else {
+    v.clear();
+  }
+}
+
+/// The sweep's status (the active pieces bottom to top) is an intrusive red-black tree over a
+/// pool of nodes: no allocation per insertion, and a node keeps its place in the tree when the
+/// piece it holds changes (a chain going on, two pieces crossing).
+using StatusHook =
+    boost::intrusive::set_member_hook<boost::intrusive::link_mode<boost::intrusive::normal_link>,
+                                      boost::intrusive::optimize_size<true>>;
+struct StatusNode {
+  StatusHook hook;
+  int piece = -1;
+  int self = -1;  ///< its index in the pool
+};
+
+/// A piece of an input edge while the sweep has it (split_edges.cpp).
+struct SweepPiece {
+  XPoint left, right;
+  IPoint lineA, lineB;
+  Windings contribution{};
+  Windings windBelow{};
+  int node = -1;          ///< its status node while in the status, else -1
+  int slot = -1;          ///< index of its output piece (result pieces only) while in the status
+  int resultBelow = -1;   ///< nearest result piece below it when it was inserted
+  int checkedAbove = -1;  ///< the last piece above it tested for a crossing
+  bool open = false;      ///< a piece of an open polyline (zero contribution, never merged)
+  LinePlace place = LinePlace::Outside;  ///< open pieces: where it lies
+  [[nodiscard]] int nearestResult() const { return slot >= 0 ? slot : resultBelow; }
+  [[nodiscard]] IPoint direction() const { return {lineB.x - lineA.x, lineB.y - lineA.y}; }
+  [[nodiscard]] Windings windAbove() const {
+    return {windBelow[0] + contribution[0], windBelow[1] + contribution[1]};
+  }
+};
+
+/// An input edge end on the grid, sorted once before the sweep.
+struct SweepStart {
+  IPoint point;
+  int piece;
+  bool end;  ///< the right end of `piece` (a hint: the piece may have been merged away)
+};
+
+/// A point the sweep must visit that is not an input vertex: a crossing, an off-grid end, or
+/// where a merged coincident piece goes on.
+struct SweepEvent {
+  XPoint point;
+  int piece = -1;    ///< -1: visit the point only
+  int through = -1;  ///< a crossing: one of the two pieces crossing there (locates p)
+};
+
+/// A vertex of a path being pre-clipped and the supporting segment of the edge leaving it
+/// (convex_clip.cpp).
+struct ClipVertex {
+  XPoint p;
+  IPoint lineA, lineB;
+};
+
+/// Every kept working array of the pipeline. A workspace serves one call at a time.
+struct Workspace {
+  // Sweep (split_edges.cpp).
+  std::vector<SweepPiece> pieces;
+  std::vector<SweepStart> starts;
+  std::vector<SweepEvent> queue;  ///< a binary heap, earliest point first
+  /// Status node pool, as many as the status was ever wide (a deque: nodes never move).
+  std::deque<StatusNode> nodes;
+  std::vector<int> freeNodes;
+  std::vector<int> starting;  ///< pieces starting at the current event point
+  std::vector<int> through;   ///< pieces through the current event point
+  // Convex pre-clip (convex_clip.cpp, boolean_op.cpp).
+  std::vector<ClipVertex> path, next;
+  std::vector<ExactEdge> clipped;
+  std::vector<InputEdge> edges;
+
+  /// Re-entry guard: set while a call uses this workspace (see WorkspaceLease).
+  std::atomic<bool> busy{false};
+
+  /// Empty every array, keeping the capacity of those up to kKeptScratchBytes.
+  void recycleAll();
+  /// Free every array.
+  void release();
+};
+
+/// The calling thread's workspace, or `preferred`'s, for the length of one call. When that
+/// workspace is already in use (a second thread calling the same PreparedRegion, or a re-entry),
+/// the lease makes a private one instead, so a call never sees another call's arrays. On exit,
+/// also by an exception, every array is recycled.
+class WorkspaceLease {
+ public:
+  WorkspaceLease();  ///< the calling thread's workspace
+  explicit WorkspaceLease(Workspace& preferred);
+  WorkspaceLease(const WorkspaceLease&) = delete;
+  WorkspaceLease& operator=(const WorkspaceLease&) = delete;
+  ~WorkspaceLease();
+  Workspace& operator*() const { return *ws_; }
+  Workspace* operator->() const { return ws_; }
+
+ private:
+  void acquire(Workspace& preferred);
+  std::unique_ptr<Workspace> own_;
+  Workspace* ws_ = nullptr;
+};
+
+/// Free the calling thread's workspace (roiclip::releaseThreadBuffers()).
+void releaseThreadWorkspace();
+
+}  // namespace roiclip::detail
