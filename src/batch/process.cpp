@@ -11,7 +11,7 @@
 // cross); with approxEpsilon > 0 it takes one simplify, since approxPolyDP contours may. One ROI:
 // N + 3 calls (N + 2 with tags kept; 2N + 3 with approxEpsilon), plus one clipLines with
 // openEdges; with R > 1 ROIs, R + 2 for the region and R more per contour inside it (per-ROI
-// figures).
+// figures). The region (and each ROI) is prepared once per image (PreparedRegion).
 #include <roiclip/batch/process.hpp>
 
 #include <algorithm>
@@ -158,8 +158,9 @@ class Pipeline {
     detectTags(gray, r);
     if (buildRoi(r, calls)) {
       const std::vector<opencv::ContourGroup> groups = findContours(gray, r);
-      const Paths all = clipContours(groups, r, calls);
-      if (options_.contours.openEdges) clipEdges(gray, r, calls);
+      const PreparedRegion roi(r.roi, FillRule::EvenOdd, options_.grid);  // once per image
+      const Paths all = clipContours(groups, roi, r, calls);
+      if (options_.contours.openEdges) clipEdges(gray, roi, r, calls);
       checkMasks(all, r);
     }
     r.seconds.total = secondsSince(start);
@@ -273,12 +274,18 @@ class Pipeline {
 
   // Each contour alone, then all together. Returns all contours' rings (the mask check's
   // subject).
-  Paths clipContours(const std::vector<opencv::ContourGroup>& groups, ImageResult& r,
-                     detail::CoreCalls& calls) const {
+  Paths clipContours(const std::vector<opencv::ContourGroup>& groups, const PreparedRegion& roi,
+                     ImageResult& r, detail::CoreCalls& calls) const {
     const auto t = Clock::now();
     const FillRule rule = options_.subjectFillRule;
     Paths all;
     r.contours.reserve(groups.size());
+    std::vector<PreparedRegion> perRoi;  // with several ROIs, each prepared once
+    if (r.rois.size() > 1) {
+      perRoi.reserve(r.rois.size());
+      for (const RoiRegion& one : r.rois)
+        perRoi.emplace_back(one.region, FillRule::EvenOdd, options_.grid);
+    }
     for (const opencv::ContourGroup& group : groups) {
       ContourResult c;
       c.contourIndex = group.index;
@@ -290,17 +297,14 @@ class Pipeline {
         c.inputArea = opencv::pixelContourArea(group);
       }
       ++calls.clip;
-      c.clipped =
-          clip(ClipOp::Intersection, c.input, r.roi, rule, FillRule::EvenOdd, options_.grid);
+      c.clipped = roi.intersect(c.input, rule);
       c.clippedArea = c.clipped.area();
       if (r.rois.size() > 1 && !c.clipped.empty()) {
         const Paths inside = c.clipped.toPaths();
         for (std::size_t i = 0; i < r.rois.size(); ++i) {
           RoiRegion& one = r.rois[i];
           ++calls.clip;
-          const double area = clip(ClipOp::Intersection, inside, one.region, FillRule::EvenOdd,
-                                   FillRule::EvenOdd, options_.grid)
-                                  .area();
+          const double area = perRoi[i].intersect(inside, FillRule::EvenOdd).area();
           if (area > 0) {
             ++one.contoursOut;
             c.rois.push_back(static_cast<int>(i));
@@ -318,7 +322,7 @@ class Pipeline {
     }
     r.contoursIn = static_cast<int>(r.contours.size());
     ++calls.clip;
-    r.clipped = clip(ClipOp::Intersection, all, r.roi, rule, FillRule::EvenOdd, options_.grid);
+    r.clipped = roi.intersect(all, rule);
     r.clippedArea = r.clipped.area();
     if (r.rois.size() == 1) {
       r.rois[0].contoursOut = r.contoursOut;
@@ -328,7 +332,8 @@ class Pipeline {
     return all;
   }
 
-  void clipEdges(const cv::Mat& gray, ImageResult& r, detail::CoreCalls& calls) const {
+  void clipEdges(const cv::Mat& gray, const PreparedRegion& roi, ImageResult& r,
+                 detail::CoreCalls& calls) const {
     const auto t = Clock::now();
     const opencv::ContourOptions& c = options_.contours;
     cv::Mat edgeImage;
@@ -337,7 +342,7 @@ class Pipeline {
     if (c.approxEpsilon > 0) opencv::approximatePolylines(lines, c.approxEpsilon);
     r.edgesIn = static_cast<int>(lines.size());
     ++calls.clipLines;
-    r.edges = clipLines(lines, r.roi, FillRule::EvenOdd, LinePart::Inside, options_.grid);
+    r.edges = roi.clipLines(lines, LinePart::Inside);
     r.edgeLength = opencv::polylineLength(r.edges);
     r.seconds.clip += secondsSince(t);
   }
