@@ -155,9 +155,11 @@ Arrangement splitEdges(const std::vector<InputEdge>& edges,
 
 /// A closed ring traced from result pieces, filled on its left.
 struct TracedRing {
-  std::vector<int> vertices;  ///< vertex ids, each once; collinear vertices removed
-  int referencePiece = -1;    ///< its lowest piece at its leftmost vertex
-  bool hole = false;          ///< true when the region inside is not filled
+  /// vertex ids, each once; straight-on vertices removed except touch points (where other
+  /// result pieces meet the ring)
+  std::vector<int> vertices;
+  int referencePiece = -1;  ///< its lowest piece at its leftmost vertex
+  bool hole = false;        ///< true when the region inside is not filled
 };
 
 /// Stage 3 (trace_contours.cpp): link result pieces into simple closed rings with the paper's
