@@ -190,6 +190,13 @@ void preclipConvex(const std::vector<std::vector<IPoint>>& rings,
 /// in, and emit the polygons in image coordinates with roiclip's output orientation.
 PolygonSet buildNesting(const Arrangement& arrangement, const Contours& contours, const Grid& grid);
 
+/// Stage 5, on request (snap_round.cpp, roundTo()): snap rounding. The pixel (the half-open
+/// square [c - 1/2, c + 1/2) of `unitsPerStep` working units around a point c of the step grid) of
+/// every vertex of the arrangement is hot; every result piece becomes the chain through the centres
+/// of the hot pixels it meets, in the order it meets them, directed with the filled side on its
+/// left. Returns those chains as input edges in step units (operand 0, winding +1 inside).
+std::vector<InputEdge> snapRoundPieces(const Arrangement& arrangement, std::int64_t unitsPerStep);
+
 /// The general path (every operation, no convex shortcut): stages 0 to 4.
 PolygonSet booleanGeneral(const Paths& subject, const Paths* clipPaths, const Combination& how,
                           const Grid& grid);
