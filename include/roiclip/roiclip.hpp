@@ -92,7 +92,8 @@ PolygonSet symmetricDifference(const PolygonSet& subject, const PolygonSet& clip
 /// their outer ring, and rings touch only at shared vertices: the result is valid for GEOS and
 /// OGC consumers, and fillPoly draws it without crossings. Each boundary point moves by at
 /// most step * sqrt(2) / 2; parts and holes thinner than a step may collapse and vanish, and
-/// parts that come closer than a step may be merged at a vertex or along an edge.
+/// parts that come closer than a step may be merged at a vertex or along an edge. A region
+/// whose vertices all lie on the grid already is returned unchanged (in its canonical form).
 ///
 /// Output coordinates are n * step, correctly rounded when 1 / step is an integer (1e-6 gives
 /// n / 1e6) or step is a power of two.

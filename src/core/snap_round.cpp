@@ -172,8 +172,14 @@ void appendEdge(IPoint s, IPoint t, std::vector<InputEdge>& out) {
 std::vector<InputEdge> snapRoundPieces(const Arrangement& arrangement, std::int64_t unitsPerStep) {
   std::vector<IPoint> pixelOfVertex;
   pixelOfVertex.reserve(arrangement.vertices.size());
-  for (const XPoint& v : arrangement.vertices) pixelOfVertex.push_back(pixelOf(v, unitsPerStep));
-  const HotPixels hot(pixelOfVertex);
+  bool moves = false;  // some vertex is not a pixel centre
+  for (const XPoint& v : arrangement.vertices) {
+    pixelOfVertex.push_back(pixelOf(v, unitsPerStep));
+    const IPoint c = pixelOfVertex.back();
+    moves = moves || v.w != 1 || v.x != i128(c.x) * unitsPerStep || v.y != i128(c.y) * unitsPerStep;
+  }
+  // Where nothing moves, nothing is rerouted: the region is already on the grid.
+  const HotPixels hot(moves ? pixelOfVertex : std::vector<IPoint>{});
   const double inv = 1.0 / double(unitsPerStep);
 
   std::vector<InputEdge> out;
