@@ -163,6 +163,11 @@ void GeometryCommands::addCommon(CLI::App* cmd, Common& options, bool regions) {
       ->capture_default_str();
   cmd->add_flag("--dissolve", options.dissolve,
                 "merge all features first and write one (properties \"area\", \"rings\")");
+  cmd->add_option("--round-to", options.roundTo,
+                  "snap-round each result onto multiples of STEP (1: integer pixels, 1e-6: GIS "
+                  "degrees), keeping it valid: no crossings, holes inside (roiclip::roundTo)")
+      ->type_name("STEP")
+      ->check(CLI::PositiveNumber);
 }
 
 void GeometryCommands::addGridScale(CLI::App* cmd) {
@@ -184,6 +189,29 @@ std::vector<io::Feature> readRegions(const std::string& file, const std::string&
       io::readAnyFeatures(file, io::parseFormat(format.c_str()), options);
   if (dissolve) features = {io::dissolve(features)};
   return features;
+}
+
+// --round-to: each result snap-rounded onto the step grid; ids and input properties kept, the
+// summary properties ("area", "rings") of a feature that had none recomputed.
+void roundResults(std::vector<io::Feature>& results, const std::vector<io::Feature>& inputs,
+                  double step) {
+  if (step == 0) return;
+  for (std::size_t i = 0; i < results.size(); ++i) {
+    PolygonSet set;
+    for (const Paths& rings : results[i].polygons) {
+      Polygon polygon;
+      polygon.outer = rings.front();
+      polygon.holes.assign(rings.begin() + 1, rings.end());
+      set.polygons.push_back(std::move(polygon));
+    }
+    io::Feature rounded = io::toFeature(roundTo(set, step));
+    rounded.id = results[i].id;
+    if (!inputs[i].propertiesJson.empty()) {
+      rounded.propertiesJson = results[i].propertiesJson;
+      rounded.properties = results[i].properties;
+    }
+    results[i] = std::move(rounded);
+  }
 }
 
 void refuseTwoStdins(const std::string& a, const std::string& b) {
@@ -209,7 +237,8 @@ void GeometryCommands::execute() const {
     const FillRule rule = parseFillRule(s.rule.c_str());
     const auto input = readRegions(s.input, s.inputFormat, s.dissolve, warnings);
     snapCheck(io::allRings(input), s.input);
-    const auto result = io::simplifyFeatures(input, io::sourceName(s.input), rule, grid_);
+    auto result = io::simplifyFeatures(input, io::sourceName(s.input), rule, grid_);
+    roundResults(result, input, s.roundTo);
     printWarnings(warnings);
     io::writeFeatures(result, s.output, io::parseFormat(s.format.c_str()), writeOptions(s));
   } else if (clip_.cmd->parsed()) {
@@ -224,8 +253,9 @@ void GeometryCommands::execute() const {
     const auto clipRegion = readRegions(c.clip, c.inputFormat, c.dissolve, warnings);
     snapCheck(io::allRings(subject), c.subject);
     snapCheck(io::allRings(clipRegion), c.clip);
-    const auto result = io::clipFeatures(op, subject, io::sourceName(c.subject), clipRegion,
-                                         io::sourceName(c.clip), subjectRule, clipRule, grid_);
+    auto result = io::clipFeatures(op, subject, io::sourceName(c.subject), clipRegion,
+                                   io::sourceName(c.clip), subjectRule, clipRule, grid_);
+    roundResults(result, subject, c.roundTo);
     printWarnings(warnings);
     io::writeFeatures(result, c.output, io::parseFormat(c.format.c_str()), writeOptions(c));
   } else if (clipLines_.cmd->parsed()) {

@@ -55,6 +55,7 @@ class GeometryCommands {
     std::string inputFormat = "auto";
     std::string orientation = "rfc7946";
     bool dissolve = false;
+    double roundTo = 0;  ///< --round-to STEP: snap-round results onto multiples of STEP; 0: off
   };
   struct Simplify : Common {
     CLI::App* cmd = nullptr;

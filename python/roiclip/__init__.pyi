@@ -123,9 +123,9 @@ class PolygonSet:
         contours (N, 1, 2) of `dtype` (int32, float32, float64), hierarchy (1, M, 4) int32
         [next, previous, first_child, parent] or None when empty.
 
-        int32 rounds every vertex to the nearest pixel (up to 0.5 px per axis), so a ring may
-        then touch or cross itself or another ring, or collapse. Snap rounding that guarantees
-        no crossings is planned; float32/float64 keep the sub-pixel vertices."""
+        int32 is the region snap-rounded to whole pixels (round_to(set, 1)): no crossings or
+        overlaps, holes inside, each boundary point moved by up to 0.71 px, parts thinner than a
+        pixel gone; float32/float64 keep the sub-pixel vertices."""
     @property
     def __geo_interface__(self) -> dict[str, Any]:
         """MultiPolygon mapping, rings closed: shapely.geometry.shape(result) works."""
@@ -164,6 +164,8 @@ def from_shapely(geometry: Any) -> list[npt.NDArray[np.float64]]:
     """Rings of a Polygon/MultiPolygon (anything with __geo_interface__, or a GeoJSON-like
     mapping) as paths, closing points dropped."""
 
+def round_to(region: PolygonSet, step: float) -> PolygonSet:
+    """The region snap-rounded onto multiples of `step` (1, 1/256, 1e-6): valid, on the grid."""
 def release_thread_buffers() -> None: ...
 
 class Tag:

@@ -17,10 +17,9 @@ namespace roiclip::python {
 namespace {
 
 constexpr const char* kRounding =
-    "Integer contours round every vertex to the nearest pixel (std::lround), which moves it by up "
-    "to 0.5 px per axis: a ring may then touch or cross itself or another ring, or collapse. "
-    "(Snap rounding that guarantees no crossings is planned.) float32 / float64 keep the "
-    "sub-pixel vertices.";
+    "Integer contours are the region snap-rounded to whole pixels (round_to(set, 1)): they never "
+    "cross or overlap and holes stay inside, but each boundary point moves by up to 0.71 px and "
+    "parts thinner than a pixel may vanish. float32 / float64 keep the sub-pixel vertices.";
 
 py::object indexOrNone(int i) { return i < 0 ? py::object(py::none()) : py::object(py::int_(i)); }
 
@@ -312,6 +311,18 @@ void bindGeometry(py::module_& m) {
       "PolygonSet, GeoJSON-like dicts; also inside a GeometryCollection, Feature or "
       "FeatureCollection) as paths: a list of (N, 2) float64 arrays, the repeated closing point "
       "dropped. Read them with 'evenodd' (valid polygons mean the same under any rule).");
+
+  m.def(
+      "round_to",
+      [](const PolygonSet& set, double step) {
+        py::gil_scoped_release release;
+        return roundTo(set, step);
+      },
+      py::arg("region"), py::arg("step"),
+      "The region snap-rounded onto multiples of `step` (1: integer pixels, 1/256, 1e-6 for GIS "
+      "degrees): every vertex on the grid, no crossings, no overlapping parts, holes inside their "
+      "outer ring (valid for shapely/GEOS). Each boundary point moves by at most "
+      "step * sqrt(2) / 2; parts thinner than a step may vanish.");
 
   m.def("release_thread_buffers", &releaseThreadBuffers,
         "Free the working arrays the calling thread keeps between calls (each thread keeps those "

@@ -145,3 +145,19 @@ def test_version():
 def _shoelace(ring):
     x, y = np.asarray(ring, np.float64).T
     return 0.5 * float(np.sum(x * np.roll(y, -1) - np.roll(x, -1) * y))
+
+
+def test_round_to_keeps_parts_apart():
+    # The apex (5.40625, 0.515625) lies just below the edge (0,0)-(10,1): rounded alone it would
+    # land inside the other part; snap rounding routes the edge through (5, 1) as well.
+    region = roiclip.simplify([[[0, 0], [10, 1], [10, 5], [0, 5]],
+                               [[5.40625, 0.515625], [7, -3], [4, -3]]], "nonzero")
+    rounded = roiclip.round_to(region, 1.0)
+    assert len(rounded) == 2
+    for polygon in rounded:
+        assert np.array_equal(polygon.exterior, np.round(polygon.exterior))
+    assert abs(rounded.area - region.area) < 5
+    contours, _ = region.to_contours()
+    assert any((c[:, 0] == [5, 1]).all(axis=1).any() for c in contours)
+    with pytest.raises(roiclip.InvalidInputError):
+        roiclip.round_to(region, 0.0)

@@ -51,5 +51,5 @@ def test_docstrings_everywhere():
 
 
 def test_to_contours_documents_rounding():
-    assert "nearest" in roiclip.PolygonSet.to_contours.__doc__
-    assert "nearest" in STUB.read_text()
+    assert "snap-rounded" in roiclip.PolygonSet.to_contours.__doc__
+    assert "snap-rounded" in STUB.read_text()

@@ -158,9 +158,11 @@ Arrangement splitEdges(const std::vector<InputEdge>& edges,
 
 /// A closed ring traced from result pieces, filled on its left.
 struct TracedRing {
-  std::vector<int> vertices;  ///< vertex ids, each once; collinear vertices removed
-  int referencePiece = -1;    ///< its lowest piece at its leftmost vertex
-  bool hole = false;          ///< true when the region inside is not filled
+  /// vertex ids, each once; straight-on vertices removed except touch points (where other
+  /// result pieces meet the ring)
+  std::vector<int> vertices;
+  int referencePiece = -1;  ///< its lowest piece at its leftmost vertex
+  bool hole = false;        ///< true when the region inside is not filled
 };
 
 /// Stage 3 (trace_contours.cpp): link result pieces into simple closed rings with the paper's
@@ -194,6 +196,13 @@ void preclipConvex(const Rings& rings, const std::vector<IPoint>& convexRing,
 /// Stage 4 (nesting.cpp): give each hole its outer ring and each outer ring the hole it lies
 /// in, and emit the polygons in image coordinates with roiclip's output orientation.
 PolygonSet buildNesting(const Arrangement& arrangement, const Contours& contours, const Grid& grid);
+
+/// Stage 5, on request (snap_round.cpp, roundTo()): snap rounding. The pixel (the half-open
+/// square [c - 1/2, c + 1/2) of `unitsPerStep` working units around a point c of the step grid) of
+/// every vertex of the arrangement is hot; every result piece becomes the chain through the centres
+/// of the hot pixels it meets, in the order it meets them, directed with the filled side on its
+/// left. Returns those chains as input edges in step units (operand 0, winding +1 inside).
+std::vector<InputEdge> snapRoundPieces(const Arrangement& arrangement, std::int64_t unitsPerStep);
 
 /// The general path (every operation, no convex shortcut): stages 0 to 4.
 PolygonSet booleanGeneral(const Paths& subject, const Paths* clipPaths, const BooleanSpec& spec,

@@ -8,6 +8,8 @@
 // touch at a vertex come out as separate rings. Where several rings share a vertex, the walk
 // leaves along the piece next clockwise to the one it arrived on, so the rings only touch
 // there; a free choice can make two rings cross at that vertex (found by fuzz_simplify).
+// Vertices where a ring goes straight on are removed, except where other result pieces meet
+// the ring (a touch point): there every ring through the point keeps it as a vertex.
 #include <algorithm>
 
 #include <roiclip/error.hpp>
@@ -137,7 +139,11 @@ Contours traceContours(const Arrangement& arrangement) {
           }
           const int in = stackE[k + (i + n - 1) % n];
           const int out = stackE[k + i];
-          if (crossSign(direction(pieces[in]), direction(pieces[out])) != 0) {
+          // A straight-on vertex is dropped unless other result pieces meet there too: a hole
+          // or another part touching this ring's edge must find a vertex of this ring at the
+          // touch point, or after rounding to doubles it may cross the edge.
+          if (outFirst[v + 1] - outFirst[v] > 1 ||
+              crossSign(direction(pieces[in]), direction(pieces[out])) != 0) {
             ring.vertices.push_back(v);
           }
         }

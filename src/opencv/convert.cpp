@@ -261,7 +261,10 @@ std::vector<ContourGroup> groupContours(cv::InputArrayOfArrays contours, cv::Inp
   return groups;
 }
 
-Contours<cv::Point> toContours(const PolygonSet& set) { return convertSet<cv::Point>(set, 1.0); }
+// Snap-rounded first: rounding each vertex on its own can make rings cross.
+Contours<cv::Point> toContours(const PolygonSet& set) {
+  return convertSet<cv::Point>(roundTo(set, 1.0), 1.0);
+}
 
 Contours<cv::Point2f> toContours2f(const PolygonSet& set) {
   return convertSet<cv::Point2f>(set, 1.0);

@@ -425,6 +425,27 @@ TEST_F(Cli, WktInAndOut) {
   EXPECT_EQ(lines.out.rfind("MULTILINESTRING(", 0), 0u) << lines.out;
 }
 
+TEST_F(Cli, RoundToSnapRoundsEachResult) {
+  // B's apex (5.40625, 0.515625) lies just below A's edge (0,0)-(10,1); at whole pixels the edge is
+  // routed through (5,1), where the two parts then touch.
+  const fs::path in = dir_ / "near.json";
+  std::ofstream(in) << R"({"paths": [[[0, 0], [10, 1], [10, 5], [0, 5]],
+                                     [[5.40625, 0.515625], [7, -3], [4, -3]]]})";
+  const CliRun exact = run("simplify --fill-rule nonzero --format wkt '" + in.string() + "'");
+  ASSERT_EQ(exact.exitCode, 0) << exact.err;
+  EXPECT_NE(exact.out.find("5.40625 0.515625"), std::string::npos) << exact.out;
+  const CliRun r =
+      run("simplify --fill-rule nonzero --round-to 1 --format wkt '" + in.string() + "'");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(r.out, "MULTIPOLYGON(((0 5,0 0,5 1,10 1,10 5,0 5)),((5 1,4 -3,7 -3,5 1)))\n");
+  const CliRun clipped =
+      run("clip --round-to 0.5 --op union '" + in.string() + "' '" + in.string() + "'");
+  ASSERT_EQ(clipped.exitCode, 0) << clipped.err;
+  EXPECT_GT(area(clipped), 40.0);
+  EXPECT_EQ(run("simplify --round-to 0 '" + in.string() + "'").exitCode, 1);
+  EXPECT_EQ(run("simplify --round-to -1 '" + in.string() + "'").exitCode, 1);
+}
+
 TEST_F(Cli, DashIsStandardInputAndOutput) {
   const CliRun in = run("simplify --dissolve - < '" + kData + "frame.geojson'");
   ASSERT_EQ(in.exitCode, 0) << in.err;

@@ -32,6 +32,7 @@
 #include <roiclip/io/geojson.hpp>
 #include <roiclip/roiclip.hpp>
 
+#include "support/geos_validity.hpp"
 #include "support/oracle.hpp"
 
 namespace roiclip::conformance {
@@ -579,6 +580,20 @@ void runCase(const Case& c) {
     EXPECT_GT(v.samples, 0u) << "the oracle had no sample point";
   }
   EXPECT_EQ(v.oursWrong, 0u) << "our result disagrees with the exact winding-number oracle";
+  // Valid for GIS consumers as printed: the result itself and snap-rounded onto a step of 1/256
+  // of the data's extent (coordinates in these suites range from 1e-3 to 1e6).
+  EXPECT_EQ(testing::geosValidityProblem(ours.result), "");
+  if (!ours.result.empty()) {
+    double lo = INFINITY, hi = -INFINITY;
+    for (const Path& ring : ourRings) {
+      for (const Point& p : ring) {
+        lo = std::min({lo, p.x, p.y});
+        hi = std::max({hi, p.x, p.y});
+      }
+    }
+    const double step = std::exp2(std::floor(std::log2(std::max(hi - lo, 1e-300) / 256)));
+    EXPECT_EQ(testing::geosValidityProblem(roundTo(ours.result, step)), "") << "step " << step;
+  }
   if (suiteErrors().count(c.id()) > 0) {
     // Listed as a suite error (evidence in VERDICTS.md): we must still match the oracle, and
     // still differ from the suite, or the entry is stale.

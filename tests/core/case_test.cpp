@@ -27,6 +27,7 @@
 #include <roiclip/roiclip.hpp>
 
 #include "data_files.hpp"
+#include "support/geos_validity.hpp"
 #include "support/oracle.hpp"
 
 namespace roiclip {
@@ -53,6 +54,8 @@ void checkExpectation(const Paths& subject, const Paths* clipPaths, const nlohma
 
   EXPECT_NEAR(r.area(), e.at("area").get<double>(), e.value("areaTolerance", 1e-9));
   EXPECT_EQ(testing::structureProblems(r), "");
+  EXPECT_EQ(testing::geosValidityProblem(r), "");
+  EXPECT_EQ(testing::geosValidityProblem(roundTo(r, 1.0)), "");
   if (e.contains("rings")) {
     EXPECT_EQ(r.ringCount(), e.at("rings").get<std::size_t>());
   }

@@ -9,6 +9,7 @@
 
 #include <roiclip/roiclip.hpp>
 
+#include "support/geos_validity.hpp"
 #include "support/oracle.hpp"
 
 namespace roiclip {
@@ -103,6 +104,12 @@ TEST_P(SimplifyProperty, MatchesWindingOracle) {
       ASSERT_EQ(problems, "") << toString(rule) << " input " << describe(input);
       ASSERT_EQ(report.mismatches, 0)
           << toString(rule) << " " << report.firstMismatch << " input " << describe(input);
+      EXPECT_EQ(testing::geosValidityProblem(result), "")
+          << toString(rule) << " input " << describe(input);
+      for (const double step : {1.0, 1.0 / 256}) {
+        EXPECT_EQ(testing::geosValidityProblem(roundTo(result, step)), "")
+            << "roundTo " << step << ", " << toString(rule) << " input " << describe(input);
+      }
       if (!result.empty()) ++nonEmpty;
     }
   }
@@ -147,6 +154,9 @@ TEST_P(ClipProperty, MatchesWindingOracleAndAreaIdentities) {
           ASSERT_EQ(report.mismatches, 0)
               << toString(op) << " " << toString(ra) << "/" << toString(rb) << " "
               << report.firstMismatch << " A " << describe(a) << " B " << describe(b);
+          EXPECT_EQ(testing::geosValidityProblem(result), "")
+              << toString(op) << " " << toString(ra) << "/" << toString(rb) << " A " << describe(a)
+              << " B " << describe(b);
         }
         if (area[0] > 0) ++overlapping;
         const double areaA = simplify(a, ra).area();

@@ -22,6 +22,7 @@
 
 #include <roiclip/roiclip.hpp>
 
+#include "support/geos_validity.hpp"
 #include "support/oracle.hpp"
 
 namespace roiclip::fuzz {
@@ -129,6 +130,20 @@ void checkAgainstOracle(const PolygonSet& result, const std::vector<const Paths*
     fail("point-in-result differs from the exact winding (" + std::to_string(report.mismatches) +
          " of " + std::to_string(report.checked) + "): " + report.firstMismatch + "\n" +
          describe());
+  }
+  // Valid for GEOS as printed, and so is the result snap-rounded to whole pixels and to 1/256 px
+  // (the latter where the extent fits 2^29 steps).
+  const std::string invalid = testing::geosValidityProblem(result);
+  if (!invalid.empty()) fail("GEOS: " + invalid + "\n" + describe());
+  for (const double step : {1.0, 1.0 / 256}) {
+    if ((hi - lo) / step > 0x1p28) continue;
+    PolygonSet rounded;
+    expectDocumentedErrors(
+        "roundTo", [&] { rounded = roundTo(result, step); }, true);
+    const std::string problem = testing::geosValidityProblem(rounded);
+    if (!problem.empty()) {
+      fail("GEOS, rounded to " + std::to_string(step) + ": " + problem + "\n" + describe());
+    }
   }
   const double truth = testing::slabArea(inputs, expected);
   const double area = result.area();

@@ -22,10 +22,10 @@ using roiclip::intersect;
 ///   toContours*(roiclip::clip(op, fromContours(contours, hierarchy), region, ...)).
 /// All contours together are one subject (read with `contourRule`), so overlapping contours
 /// merge; clip per outer contour with clipGroups() to keep them apart.
-/// @tparam PointT cv::Point (default; toContours(): rounded to whole pixels, ready for
-///         cv::drawContours, cv::pointPolygonTest, cv::moments; rounding can make rings touch or
-///         cross, see toContours()), cv::Point2f (toContours2f()) or cv::Point2d (the exact
-///         output, toContours2d()).
+/// @tparam PointT cv::Point (default; toContours(): snap-rounded to whole pixels, ready for
+///         cv::drawContours, cv::pointPolygonTest, cv::moments; rings never cross, parts thinner
+///         than a pixel vanish, see toContours()), cv::Point2f (toContours2f()) or cv::Point2d (the
+///         exact output, toContours2d()).
 /// @param contours  as fromContours(): cv::findContours / cv::approxPolyDP output.
 /// @param hierarchy its cv::findContours hierarchy (any retrieval mode), or cv::noArray() to keep
 ///        every contour's orientation (see fromContours()).

@@ -84,11 +84,12 @@ struct Contours {
 /// orientations are kept: outer rings have cv::contourArea(c, true) < 0, holes > 0, like
 /// cv::findContours output.
 ///
-/// Rounding to integer pixels (std::lround on each coordinate) moves each vertex by up to
-/// 0.5 px per axis. That can make a simple ring touch or even cross itself, or touch another
-/// ring, drop a vertex onto a repeated point, or collapse a thin ring to zero area. Use it for
-/// APIs that need cv::Point (cv::pointPolygonTest, cv::boundingRect, moments); for drawing use
-/// toFixedPointContours() / fillPolygonSet(), which keep sub-pixel positions.
+/// The set is snap-rounded to whole pixels first (roiclip::roundTo(set, 1.0)), so the integer
+/// contours never cross or overlap, holes stay inside their outer ring, and cv::fillPoly /
+/// cv::drawContours see a valid region: each boundary point moves by at most 0.71 px, parts and
+/// holes thinner than a pixel may vanish, and parts closer than a pixel may come to touch. Rings
+/// may touch at shared vertices, as cv::findContours output does. For sub-pixel drawing use
+/// toFixedPointContours() / fillPolygonSet().
 /// @throws InvalidInputError if a coordinate does not fit in an int.
 Contours<cv::Point> toContours(const PolygonSet& set);
 /// As toContours(), in float (no rounding to pixels; float keeps ~1/256 px up to 32768 px).
