@@ -311,12 +311,12 @@ PolygonSet roundTo(const PolygonSet& region, double step) {
     for (std::size_t i = 0; i < ring.size(); ++i)
       appendEdge(ring[i], ring[(i + 1) % ring.size()], edges);
   }
-  Combination read;
+  BooleanSpec read;
   read.subjectRule = kPolygonSetFillRule;
   Arrangement arrangement = splitEdges(edges, {}, read);
 
   // Round, rebuild, and round again while the rebuild finds vertices off the step grid.
-  Combination rebuild;
+  BooleanSpec rebuild;
   rebuild.subjectRule = FillRule::Positive;
   for (int pass = 0;; ++pass) {
     if (pass == kMaxPasses) throw InternalError("roundTo: snap rounding did not settle");
