@@ -20,66 +20,72 @@ namespace roiclip {
 /// @param paths closed paths; a path with fewer than 3 distinct grid points, or with zero area,
 ///        contributes nothing (it is not an error).
 /// @param rule  fill rule applied to the winding number of all paths together.
-/// @param grid  snapping grid (default 1/256 px).
-/// @return outer rings (negative shoelace sum) and holes (positive), nested as a forest.
-/// @throws InvalidInputError on NaN, infinity, or a coordinate outside the grid's range; the
-///         message names the path and vertex index.
-PolygonSet simplify(const Paths& paths, FillRule rule, const Grid& grid = {});
+/// @param options the snapping grid (default: fitted to the call's operands, see geometry.hpp)
+///        and the work limits (default: none). A Grid alone converts to Options.
+/// @return outer rings (negative shoelace sum) and holes (positive), nested as a forest; every
+///         coordinate is the double nearest its exact value.
+/// @throws InvalidInputError on NaN, infinity, a coordinate outside a fixed grid's range, or a
+///         bounding box too large for doubles; the message names the path and vertex index.
+/// @throws ResourceLimitError when the sweep finds more than options.limits.maxCrossings
+///         crossings (before their memory is taken).
+PolygonSet simplify(const Paths& paths, FillRule rule, const Options& options = {});
 
 /// Boolean operation between two path sets, each read with its own fill rule:
 /// the result covers exactly { p : op(subjectRule(w_subject(p)), clipRule(w_clip(p))) }.
 /// Both operands may self-intersect, overlap, share vertices and edges, or contain holes.
-/// @throws InvalidInputError as simplify().
+/// The grid is fitted to both operands together.
+/// @throws InvalidInputError, ResourceLimitError as simplify().
 PolygonSet clip(ClipOp op, const Paths& subject, const Paths& clip, FillRule subjectRule,
-                FillRule clipRule, const Grid& grid = {});
+                FillRule clipRule, const Options& options = {});
 
 /// Shorthands for clip() with one fill rule for both operands.
 PolygonSet intersect(const Paths& subject, const Paths& clip, FillRule rule = FillRule::EvenOdd,
-                     const Grid& grid = {});
+                     const Options& options = {});
 PolygonSet unite(const Paths& subject, const Paths& clip, FillRule rule = FillRule::EvenOdd,
-                 const Grid& grid = {});
+                 const Options& options = {});
 PolygonSet subtract(const Paths& subject, const Paths& clip, FillRule rule = FillRule::EvenOdd,
-                    const Grid& grid = {});
+                    const Options& options = {});
 PolygonSet symmetricDifference(const Paths& subject, const Paths& clip,
-                               FillRule rule = FillRule::EvenOdd, const Grid& grid = {});
+                               FillRule rule = FillRule::EvenOdd, const Options& options = {});
 
 /// PolygonSet operands: a PolygonSet (e.g. an earlier result) as the subject and/or the clip.
 /// A PolygonSet operand is read as its rings (set.toPaths()) under kPolygonSetFillRule
 /// (FillRule::NonZero; its rings are simple and nested, so EvenOdd would give the same region,
 /// see geometry.hpp), and the result is exactly that of clip() on those paths. The other
-/// operand's rule is given as usual. Like any input, the set's vertices are snapped to `grid`
-/// first: a result's crossing vertices lie off the grid (exact doubles), so feeding a result back
-/// moves them by up to half a grid unit per axis. An InvalidInputError names a ring by its index
-/// in set.toPaths() ("subject path 2, ...").
+/// operand's rule is given as usual. Like any input, the set's vertices are snapped to the grid
+/// first: a result's crossing vertices lie off the grid (the doubles nearest the exact points),
+/// so feeding a result back moves them by up to half a grid unit per axis. An InvalidInputError
+/// names a ring by its index in set.toPaths() ("subject path 2, ...").
 PolygonSet clip(ClipOp op, const PolygonSet& subject, const Paths& clip, FillRule clipRule,
-                const Grid& grid = {});
+                const Options& options = {});
 PolygonSet clip(ClipOp op, const Paths& subject, const PolygonSet& clip, FillRule subjectRule,
-                const Grid& grid = {});
+                const Options& options = {});
 PolygonSet clip(ClipOp op, const PolygonSet& subject, const PolygonSet& clip,
-                const Grid& grid = {});
+                const Options& options = {});
 
 /// Shorthands for the PolygonSet operand clip()s above; `rule` is the Paths operand's rule.
 PolygonSet intersect(const PolygonSet& subject, const Paths& clip,
-                     FillRule rule = FillRule::EvenOdd, const Grid& grid = {});
+                     FillRule rule = FillRule::EvenOdd, const Options& options = {});
 PolygonSet intersect(const Paths& subject, const PolygonSet& clip,
-                     FillRule rule = FillRule::EvenOdd, const Grid& grid = {});
-PolygonSet intersect(const PolygonSet& subject, const PolygonSet& clip, const Grid& grid = {});
+                     FillRule rule = FillRule::EvenOdd, const Options& options = {});
+PolygonSet intersect(const PolygonSet& subject, const PolygonSet& clip,
+                     const Options& options = {});
 PolygonSet unite(const PolygonSet& subject, const Paths& clip, FillRule rule = FillRule::EvenOdd,
-                 const Grid& grid = {});
+                 const Options& options = {});
 PolygonSet unite(const Paths& subject, const PolygonSet& clip, FillRule rule = FillRule::EvenOdd,
-                 const Grid& grid = {});
-PolygonSet unite(const PolygonSet& subject, const PolygonSet& clip, const Grid& grid = {});
+                 const Options& options = {});
+PolygonSet unite(const PolygonSet& subject, const PolygonSet& clip, const Options& options = {});
 PolygonSet subtract(const PolygonSet& subject, const Paths& clip, FillRule rule = FillRule::EvenOdd,
-                    const Grid& grid = {});
+                    const Options& options = {});
 PolygonSet subtract(const Paths& subject, const PolygonSet& clip, FillRule rule = FillRule::EvenOdd,
-                    const Grid& grid = {});
-PolygonSet subtract(const PolygonSet& subject, const PolygonSet& clip, const Grid& grid = {});
+                    const Options& options = {});
+PolygonSet subtract(const PolygonSet& subject, const PolygonSet& clip, const Options& options = {});
 PolygonSet symmetricDifference(const PolygonSet& subject, const Paths& clip,
-                               FillRule rule = FillRule::EvenOdd, const Grid& grid = {});
+                               FillRule rule = FillRule::EvenOdd, const Options& options = {});
 PolygonSet symmetricDifference(const Paths& subject, const PolygonSet& clip,
-                               FillRule rule = FillRule::EvenOdd, const Grid& grid = {});
+                               FillRule rule = FillRule::EvenOdd, const Options& options = {});
 PolygonSet symmetricDifference(const PolygonSet& subject, const PolygonSet& clip,
-                               const Grid& grid = {});
+                               const Options& options = {});
 
 /// Which parts of open polylines clipLines() returns.
 enum class LinePart {
@@ -99,7 +105,7 @@ enum class LinePart {
 /// @throws InvalidInputError as simplify() (lines are named "line path i", region paths
 ///         "clip path i").
 Paths clipLines(const Paths& lines, const Paths& region, FillRule regionRule,
-                LinePart part = LinePart::Inside, const Grid& grid = {});
+                LinePart part = LinePart::Inside, const Options& options = {});
 const char* toString(LinePart part);
 
 /// Free the working arrays the calling thread keeps between calls (see "Threads" above), e.g.

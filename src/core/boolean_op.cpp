@@ -23,10 +23,11 @@ thread_local std::vector<ExactEdge> tClipped;
 // Intersection with one convex ring: pre-clip the other operand to it, then resolve that alone.
 PolygonSet intersectConvexRing(const Paths& other, FillRule otherRule, int otherOperand,
                                const std::vector<IPoint>& convexRing, FillRule convexRule,
-                               const Grid& grid) {
+                               const Grid& grid, const Limits& limits) {
   if (!isFilled(convexRule, convexOrientation(convexRing))) return {};
   Combination how;
   how.subjectRule = otherRule;
+  how.maxCrossings = limits.maxCrossings;
   const RecycleOnExit<ExactEdge> recycled(tClipped);
   preclipConvex(snapRings(other, otherOperand, grid), convexRing, tClipped);
   return resolve({}, tClipped, how, grid);
@@ -50,24 +51,27 @@ void releaseThreadBuffers() {
   detail::releaseSweepBuffers();
 }
 
-PolygonSet simplify(const Paths& paths, FillRule rule, const Grid& grid) {
+PolygonSet simplify(const Paths& paths, FillRule rule, const Options& options) {
   detail::Combination how;
   how.subjectRule = rule;
-  return detail::booleanGeneral(paths, nullptr, how, grid);
+  how.maxCrossings = options.limits.maxCrossings;
+  return detail::booleanGeneral(paths, nullptr, how, resolveGrid(options.grid, paths));
 }
 
 PolygonSet clip(ClipOp op, const Paths& subject, const Paths& clipPaths, FillRule subjectRule,
-                FillRule clipRule, const Grid& grid) {
+                FillRule clipRule, const Options& options) {
+  const Grid grid = resolveGrid(options.grid, subject, clipPaths);  // one grid for both operands
   if (op == ClipOp::Intersection) {
     // The region-of-interest case: a convex clip ring takes the linear pre-clip path.
     const auto clipRings = detail::snapRings(clipPaths, 1, grid);
     if (clipRings.size() == 1 && detail::convexOrientation(clipRings[0]) != 0) {
-      return detail::intersectConvexRing(subject, subjectRule, 0, clipRings[0], clipRule, grid);
+      return detail::intersectConvexRing(subject, subjectRule, 0, clipRings[0], clipRule, grid,
+                                         options.limits);
     }
     const auto subjectRings = detail::snapRings(subject, 0, grid);
     if (subjectRings.size() == 1 && detail::convexOrientation(subjectRings[0]) != 0) {
-      return detail::intersectConvexRing(clipPaths, clipRule, 1, subjectRings[0], subjectRule,
-                                         grid);
+      return detail::intersectConvexRing(clipPaths, clipRule, 1, subjectRings[0], subjectRule, grid,
+                                         options.limits);
     }
   }
   detail::Combination how;
@@ -75,22 +79,25 @@ PolygonSet clip(ClipOp op, const Paths& subject, const Paths& clipPaths, FillRul
   how.op = op;
   how.subjectRule = subjectRule;
   how.clipRule = clipRule;
+  how.maxCrossings = options.limits.maxCrossings;
   return detail::booleanGeneral(subject, &clipPaths, how, grid);
 }
 
 PolygonSet intersect(const Paths& subject, const Paths& clipPaths, FillRule rule,
-                     const Grid& grid) {
-  return clip(ClipOp::Intersection, subject, clipPaths, rule, rule, grid);
+                     const Options& options) {
+  return clip(ClipOp::Intersection, subject, clipPaths, rule, rule, options);
 }
-PolygonSet unite(const Paths& subject, const Paths& clipPaths, FillRule rule, const Grid& grid) {
-  return clip(ClipOp::Union, subject, clipPaths, rule, rule, grid);
+PolygonSet unite(const Paths& subject, const Paths& clipPaths, FillRule rule,
+                 const Options& options) {
+  return clip(ClipOp::Union, subject, clipPaths, rule, rule, options);
 }
-PolygonSet subtract(const Paths& subject, const Paths& clipPaths, FillRule rule, const Grid& grid) {
-  return clip(ClipOp::Difference, subject, clipPaths, rule, rule, grid);
+PolygonSet subtract(const Paths& subject, const Paths& clipPaths, FillRule rule,
+                    const Options& options) {
+  return clip(ClipOp::Difference, subject, clipPaths, rule, rule, options);
 }
 PolygonSet symmetricDifference(const Paths& subject, const Paths& clipPaths, FillRule rule,
-                               const Grid& grid) {
-  return clip(ClipOp::Xor, subject, clipPaths, rule, rule, grid);
+                               const Options& options) {
+  return clip(ClipOp::Xor, subject, clipPaths, rule, rule, options);
 }
 
 }  // namespace roiclip

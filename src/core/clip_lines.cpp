@@ -12,6 +12,7 @@
 
 #include <roiclip/roiclip.hpp>
 
+#include "output.hpp"
 #include "pipeline.hpp"
 
 namespace roiclip {
@@ -22,7 +23,7 @@ class LineAssembler {
  public:
   LineAssembler(const std::vector<OpenPiece>& pieces, std::size_t edgeCount, LinePart part,
                 const Grid& grid)
-      : pieces_(pieces), part_(part), inv_(1.0 / grid.scale) {
+      : pieces_(pieces), part_(part), frame_(grid) {
     // Group the pieces by edge, keeping the sweep order (left to right) within each edge.
     first_.assign(edgeCount + 1, 0);
     for (const OpenPiece& piece : pieces) ++first_[std::size_t(piece.edge) + 1];
@@ -85,11 +86,11 @@ class LineAssembler {
   static IPoint pointAt(const InputEdge& e, bool start) {
     return (e.direction > 0) == start ? e.a : e.b;
   }
-  void push(Path& path, const XPoint& p) const { path.emplace_back(p.dx() * inv_, p.dy() * inv_); }
+  void push(Path& path, const XPoint& p) const { path.push_back(frame_.point(p)); }
 
   const std::vector<OpenPiece>& pieces_;
   LinePart part_;
-  double inv_;
+  OutputFrame frame_;
   std::vector<std::size_t> first_;
   std::vector<int> order_;
 };
@@ -140,8 +141,9 @@ std::vector<OpenPiece> clipToConvexRing(const std::vector<InputEdge>& edges,
 }  // namespace detail
 
 Paths clipLines(const Paths& lines, const Paths& region, FillRule regionRule, LinePart part,
-                const Grid& grid) {
+                const Options& options) {
   using namespace detail;
+  const Grid grid = resolveGrid(options.grid, lines, region);
   std::vector<InputEdge> edges;
   std::vector<std::size_t> firstEdge;
   appendLineEdges(lines, grid, edges, firstEdge);
@@ -160,6 +162,7 @@ Paths clipLines(const Paths& lines, const Paths& region, FillRule regionRule, Li
     how.op = ClipOp::Union;
     how.clipRule = regionRule;
     how.keepBoundary = false;
+    how.maxCrossings = options.limits.maxCrossings;
     pieces = splitEdges(edges, {}, how).openPieces;
   }
 

@@ -88,6 +88,8 @@ struct Combination {
   ClipOp op = ClipOp::Intersection;
   FillRule subjectRule = FillRule::EvenOdd;
   FillRule clipRule = FillRule::EvenOdd;
+  /// Limits::maxCrossings: the sweep throws ResourceLimitError when it finds more crossings.
+  std::uint64_t maxCrossings = Limits::kUnlimited;
   [[nodiscard]] bool inside(const Windings& w) const;
 };
 
@@ -185,7 +187,9 @@ void preclipConvex(const std::vector<std::vector<IPoint>>& rings,
                    const std::vector<IPoint>& convexRing, std::vector<ExactEdge>& out);
 
 /// Stage 4 (nesting.cpp): give each hole its outer ring and each outer ring the hole it lies
-/// in, and emit the polygons in image coordinates with roiclip's output orientation.
+/// in, and emit the polygons in image coordinates with roiclip's output orientation, every
+/// coordinate correctly rounded (output.hpp). `grid` is the call's resolved grid, as for every
+/// stage (resolveGrid()).
 PolygonSet buildNesting(const Arrangement& arrangement, const Contours& contours, const Grid& grid);
 
 /// The general path (every operation, no convex shortcut): stages 0 to 4.

@@ -380,10 +380,15 @@ class Sweep {
     const int cb = compare(x, pb.right);
     if (ca > 0 || cb > 0) return;
     if (ca == 0 || cb == 0) return;  // already an event: the end of one of them
+    // The work budget (Limits::maxCrossings), before the event takes memory.
+    if (++crossings_ > how_.maxCrossings) {
+      throw ResourceLimitError("maxCrossings", how_.maxCrossings, "crossings");
+    }
     queue_.push({x, -1, a});
   }
 
   const Combination& how_;
+  std::uint64_t crossings_ = 0;  // crossings found so far (Limits::maxCrossings)
   int vertex_ = -1;
   Buffers& buffers_ = threadBuffers();
   std::vector<Active>& active_ = buffers_.active;

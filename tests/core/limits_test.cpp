@@ -44,11 +44,12 @@ TEST(Limits, DegenerateOperandsOfClipContributeNothing) {
 }
 
 // stages/input_test.cpp covers NaN, +inf and 1e7 in a subject path and the range edge on one side.
+// A fixed 1/256 px grid: the fitted default has no range to leave.
 TEST(Limits, InvalidClipOperandIsRejectedWithItsLocation) {
-  const double edge = 4194304.0;  // 2^30 grid units at the default scale
+  const double edge = 4194304.0;  // 2^30 grid units at scale 256
   const auto message = [](const Paths& subject, const Paths& region) -> std::string {
     try {
-      intersect(subject, region);
+      intersect(subject, region, FillRule::EvenOdd, Grid::fixed(256));
     } catch (const InvalidInputError& e) {
       return e.what();
     }
