@@ -124,6 +124,9 @@ Grid resolveGrid(const Grid& grid, const Paths& subject, const Paths& clip = {})
 struct Limits {
   /// No limit.
   static constexpr std::uint64_t kUnlimited = std::numeric_limits<std::uint64_t>::max();
+  /// The crossing budget roiclip's tools set by default (the CLI per call, `roiclip run` per
+  /// clip of an image): at 200 to 320 bytes per crossing, about 5 to 8 GB.
+  static constexpr std::uint64_t kToolMaxCrossings = 25'000'000;
   /// Crossings of edges the sweep may find (each costs about 200 to 320 bytes while the call
   /// runs). Unlimited by default in the library; the CLI and `roiclip run` set 25,000,000.
   std::uint64_t maxCrossings = kUnlimited;
@@ -136,9 +139,9 @@ struct Options {
   Limits limits;  ///< the work budget (unlimited by default)
   /// A fitted grid, no limits.
   Options() = default;
-  /// `grid` with `limits` (implicit, so that a Grid can be passed where Options are taken).
-  Options(const Grid& grid, const Limits& limits = {})  // NOLINT(google-explicit-constructor)
-      : grid(grid), limits(limits) {}
+  /// `g` with `l` (implicit, so that a Grid can be passed where Options are taken).
+  Options(const Grid& g, const Limits& l = {})  // NOLINT(google-explicit-constructor)
+      : grid(g), limits(l) {}
 };
 
 /// One connected filled region: an outer ring and the holes inside it. Rings are simple (no

@@ -108,6 +108,13 @@ Paths clipLines(const Paths& lines, const Paths& region, FillRule regionRule,
                 LinePart part = LinePart::Inside, const Options& options = {});
 const char* toString(LinePart part);
 
+/// How many of `paths` contribute nothing to any region: after snapping to `grid` (a resolved
+/// grid, resolveGrid(): the one the call fits to all its operands), all of a path's points lie
+/// on one line (fewer than 3 distinct points, spikes, zero area). Such paths are ignored by every
+/// operation; the CLI reports them as "ignoredRings".
+/// @throws InvalidInputError as simplify() on NaN, infinity or a coordinate off the grid's range.
+std::size_t countDegeneratePaths(const Paths& paths, const Grid& grid);
+
 /// Free the working arrays the calling thread keeps between calls (see "Threads" above), e.g.
 /// after a burst of large inputs. The next call allocates them again.
 void releaseThreadBuffers();

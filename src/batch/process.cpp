@@ -138,6 +138,8 @@ class Pipeline {
   }
 
   [[nodiscard]] const RunOptions& options() const { return options_; }
+  /// The grid and work budget of every clip of an image.
+  [[nodiscard]] Options coreOptions() const { return {options_.grid, options_.limits}; }
 
   void run(const cv::Mat& image, ImageResult& r, detail::CoreCalls& calls) const {
     const auto start = Clock::now();
@@ -206,7 +208,7 @@ class Pipeline {
       region.name = name;
       region.paths = roi.value();
       ++calls.simplify;
-      const PolygonSet simple = simplify(region.paths, options_.roiFillRule, options_.grid);
+      const PolygonSet simple = simplify(region.paths, options_.roiFillRule, coreOptions());
       region.region = simple.toPaths();
       region.area = simple.area();
       r.rois.push_back(std::move(region));
@@ -218,7 +220,7 @@ class Pipeline {
         all.insert(all.end(), r.rois[i].region.begin(), r.rois[i].region.end());
       }
       ++calls.simplify;
-      const PolygonSet united = simplify(all, FillRule::NonZero, options_.grid);
+      const PolygonSet united = simplify(all, FillRule::NonZero, coreOptions());
       all = united.toPaths();
       allArea = united.area();
     }
@@ -231,7 +233,7 @@ class Pipeline {
       const auto minusTags = [&](const Paths& region) {
         ++calls.clip;
         return clip(ClipOp::Difference, region, r.excludedTags, FillRule::EvenOdd,
-                    FillRule::NonZero, options_.grid);
+                    FillRule::NonZero, coreOptions());
       };
       const PolygonSet region = minusTags(all);
       r.roi = region.toPaths();
@@ -274,10 +276,10 @@ class Pipeline {
       c.contourIndex = group.index;
       c.input = group.rings;
       ++calls.simplify;
-      c.inputArea = simplify(c.input, rule, options_.grid).area();
+      c.inputArea = simplify(c.input, rule, coreOptions()).area();
       ++calls.clip;
       c.clipped =
-          clip(ClipOp::Intersection, c.input, r.roi, rule, FillRule::EvenOdd, options_.grid);
+          clip(ClipOp::Intersection, c.input, r.roi, rule, FillRule::EvenOdd, coreOptions());
       c.clippedArea = c.clipped.area();
       if (r.rois.size() > 1 && !c.clipped.empty()) {
         const Paths inside = c.clipped.toPaths();
@@ -285,7 +287,7 @@ class Pipeline {
           RoiRegion& one = r.rois[i];
           ++calls.clip;
           const double area = clip(ClipOp::Intersection, inside, one.region, FillRule::EvenOdd,
-                                   FillRule::EvenOdd, options_.grid)
+                                   FillRule::EvenOdd, coreOptions())
                                   .area();
           if (area > 0) {
             ++one.contoursOut;
@@ -304,7 +306,7 @@ class Pipeline {
     }
     r.contoursIn = static_cast<int>(r.contours.size());
     ++calls.clip;
-    r.clipped = clip(ClipOp::Intersection, all, r.roi, rule, FillRule::EvenOdd, options_.grid);
+    r.clipped = clip(ClipOp::Intersection, all, r.roi, rule, FillRule::EvenOdd, coreOptions());
     r.clippedArea = r.clipped.area();
     if (r.rois.size() == 1) {
       r.rois[0].contoursOut = r.contoursOut;
@@ -323,7 +325,7 @@ class Pipeline {
     if (c.approxEpsilon > 0) opencv::approximatePolylines(lines, c.approxEpsilon);
     r.edgesIn = static_cast<int>(lines.size());
     ++calls.clipLines;
-    r.edges = clipLines(lines, r.roi, FillRule::EvenOdd, LinePart::Inside, options_.grid);
+    r.edges = clipLines(lines, r.roi, FillRule::EvenOdd, LinePart::Inside, coreOptions());
     r.edgeLength = opencv::polylineLength(r.edges);
     r.seconds.clip += secondsSince(t);
   }
@@ -367,6 +369,9 @@ ImageResult runCaught(const Pipeline& pipeline, const cv::Mat& image, detail::Co
   } catch (const ImageTooLargeError& e) {
     r.failure = FailureKind::TooLarge;
     r.reason = e.what();
+  } catch (const ResourceLimitError& e) {  // ProcessOptions::limits
+    r.failure = FailureKind::TooLarge;
+    r.reason = std::string("clipping: ") + e.what() + " (--max-crossings)";
   } catch (const InvalidInputError& e) {
     r.failure = FailureKind::InvalidInput;
     r.reason = e.what();

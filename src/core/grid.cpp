@@ -3,6 +3,7 @@
 // (resolveGrid). docs/algorithm.md, "Grid", states the guarantee and its error bound.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include <roiclip/roiclip.hpp>

@@ -5,6 +5,7 @@
 #include <string>
 
 #include <roiclip/error.hpp>
+#include <roiclip/roiclip.hpp>
 
 #include "pipeline.hpp"
 
@@ -95,6 +96,25 @@ std::vector<std::vector<IPoint>> snapRings(const Paths& paths, int operand, cons
   return rings;
 }
 
+std::size_t countDegenerate(const Paths& paths, const Grid& grid) {
+  checkGrid(grid);
+  std::size_t count = 0;
+  std::vector<IPoint> ring;
+  for (std::size_t p = 0; p < paths.size(); ++p) {
+    snapPath(paths[p], p, Operand::Subject, grid, ring);
+    // Degenerate when every point lies on the line through the first two distinct ones.
+    bool flat = true;
+    for (std::size_t i = 1; i < ring.size() && flat; ++i) {
+      if (ring[i] != ring[0]) {
+        for (const IPoint q : ring) flat = flat && orient(ring[0], ring[i], q) == 0;
+        break;
+      }
+    }
+    if (flat) ++count;
+  }
+  return count;
+}
+
 void appendInputEdges(const Paths& paths, int operand, const Grid& grid,
                       std::vector<InputEdge>& out) {
   for (const std::vector<IPoint>& ring : snapRings(paths, operand, grid)) {
@@ -139,3 +159,9 @@ void appendLineEdges(const Paths& lines, const Grid& grid, std::vector<InputEdge
 }
 
 }  // namespace roiclip::detail
+
+namespace roiclip {
+std::size_t countDegeneratePaths(const Paths& paths, const Grid& grid) {
+  return detail::countDegenerate(paths, grid);
+}
+}  // namespace roiclip

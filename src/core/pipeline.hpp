@@ -77,6 +77,9 @@ void appendInputEdges(const Paths& paths, int operand, const Grid& grid,
 void appendLineEdges(const Paths& lines, const Grid& grid, std::vector<InputEdge>& out,
                      std::vector<std::size_t>& firstEdge);
 
+/// countDegeneratePaths() (input.cpp): paths whose snapped points all lie on one line.
+std::size_t countDegenerate(const Paths& paths, const Grid& grid);
+
 /// Which side of a piece is filled in the result.
 enum class Side : std::uint8_t { None = 0, Above = 1, Below = 2 };
 
