@@ -14,6 +14,7 @@ constexpr int kExitBadInput = 2;
 constexpr int kExitCannotWrite = 3;
 constexpr int kExitInternal = 4;
 constexpr int kExitImagesFailed = 5;   ///< `run` only
+constexpr int kExitLimit = 6;          ///< geometry commands: a work limit (--max-crossings)
 constexpr int kExitInterrupted = 130;  ///< `run` only (Ctrl-C)
 
 /// One exit code and what it means for the geometry commands (simplify, clip, clip-lines) and for
@@ -28,10 +29,10 @@ inline constexpr ExitCode kExitCodes[] = {
     {kExitOk, "success", "every image processed, every mask check passed"},
     {kExitUsage, "command-line usage error", "command-line usage error"},
     {kExitBadInput,
-     "invalid input: unreadable or malformed file, NaN or non-numeric coordinate, ring with\n"
-     "fewer than 3 distinct points, line with fewer than 2 points, coordinate outside the\n"
-     "grid range (one line on stderr names the file and the problem; no output file is\n"
-     "written)",
+     "invalid input: unreadable or malformed file, NaN or non-numeric coordinate, a\n"
+     "bounding box too large for doubles, a coordinate outside a fixed --grid's range, with\n"
+     "--strict a ring with fewer than 3 distinct points or a line with fewer than 2 points\n"
+     "(one line on stderr names the file and the problem; no output file is written)",
      "invalid input: input folder missing or unreadable, no images found, bad option value,\n"
      "bad --roi/--board/--config"},
     {kExitCannotWrite, "the output file cannot be written",
@@ -42,6 +43,10 @@ inline constexpr ExitCode kExitCodes[] = {
      "at least one image failed (unreadable, not an image, truncated, more pixels than\n"
      "--max-pixels, unsupported type), had no ROI (no tags / missing id) or failed its\n"
      "mask check; see summary.csv; the other images were processed"},
+    {kExitLimit,
+     "the input needs more work than --max-crossings allows (one line on stderr names the\n"
+     "limit; no output file is written)",
+     nullptr},
     {kExitInterrupted, nullptr,
      "interrupted (Ctrl-C); finished images are complete, summary covers them"},
 };

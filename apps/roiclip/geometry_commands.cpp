@@ -2,7 +2,9 @@
 // `roiclip simplify`, `clip` and `clip-lines`: option setup and execution.
 #include "geometry_commands.hpp"
 
+#include <cmath>
 #include <iostream>
+#include <string>
 #include <vector>
 
 #include <roiclip/io/feature.hpp>
@@ -49,7 +51,8 @@ constexpr const char* kFeaturesHelp =
     "written in RFC 7946 order (exterior: positive shoelace sum, i.e. counter-clockwise with y\n"
     "up, clockwise on a y-down image); --orientation opencv writes cv::findContours' order.\n"
     "'-' reads standard input or writes standard output. Warnings (stderr): a z coordinate\n"
-    "is dropped; snapping to the grid moved a vertex by more than 1/4 grid step.\n"
+    "is dropped; snapping to a fixed --grid moved a vertex by more than 1/4 grid step;\n"
+    "degenerate rings were ignored (the summary properties count them: \"ignoredRings\").\n"
     "\n";
 
 constexpr const char* kClipLinesHelp =
@@ -68,9 +71,9 @@ constexpr const char* kClipLinesHelp =
 }  // namespace
 
 PolygonSet simplifyInput(const Paths& paths, const std::string& source, FillRule rule,
-                         const Grid& grid) {
+                         const Options& options) {
   try {
-    return simplify(paths, rule, grid);
+    return simplify(paths, rule, options);
   } catch (const InvalidInputError& e) {
     throw nameSource(e, {{Operand::Subject, source}});
   }
@@ -78,9 +81,9 @@ PolygonSet simplifyInput(const Paths& paths, const std::string& source, FillRule
 
 PolygonSet clipInputs(ClipOp op, const Paths& subject, const std::string& subjectSource,
                       const Paths& clipPaths, const std::string& clipSource, FillRule subjectRule,
-                      FillRule clipRule, const Grid& grid) {
+                      FillRule clipRule, const Options& options) {
   try {
-    return clip(op, subject, clipPaths, subjectRule, clipRule, grid);
+    return clip(op, subject, clipPaths, subjectRule, clipRule, options);
   } catch (const InvalidInputError& e) {
     throw nameSource(e, {{Operand::Subject, subjectSource}, {Operand::Clip, clipSource}});
   }
@@ -88,9 +91,9 @@ PolygonSet clipInputs(ClipOp op, const Paths& subject, const std::string& subjec
 
 Paths clipLinesInputs(const Paths& lines, const std::string& linesSource, const Paths& region,
                       const std::string& regionSource, FillRule regionRule, LinePart part,
-                      const Grid& grid) {
+                      const Options& options) {
   try {
-    return clipLines(lines, region, regionRule, part, grid);
+    return clipLines(lines, region, regionRule, part, options);
   } catch (const InvalidInputError& e) {
     throw nameSource(e, {{Operand::Line, linesSource}, {Operand::Clip, regionSource}});
   }
@@ -112,7 +115,7 @@ GeometryCommands::GeometryCommands(CLI::App& app) {
       ->check(fillRuleValidator())
       ->capture_default_str();
   addCommon(s.cmd, s, true);
-  addGridScale(s.cmd);
+  addCoreOptions(s.cmd);
 
   Clip& c = clip_;
   c.cmd = app.add_subcommand("clip", "boolean operation SUBJECT op CLIP (GeoJSON or WKT out)");
@@ -127,7 +130,7 @@ GeometryCommands::GeometryCommands(CLI::App& app) {
   c.cmd->add_option("--clip-fill-rule", c.clipRule, "fill rule for CLIP (overrides)")
       ->check(fillRuleValidator());
   addCommon(c.cmd, c, true);
-  addGridScale(c.cmd);
+  addCoreOptions(c.cmd);
 
   ClipLines& l = clipLines_;
   l.cmd = app.add_subcommand(
@@ -143,7 +146,7 @@ GeometryCommands::GeometryCommands(CLI::App& app) {
       ->check(fillRuleValidator())
       ->capture_default_str();
   addCommon(l.cmd, l, false);
-  addGridScale(l.cmd);
+  addCoreOptions(l.cmd);
 }
 
 void GeometryCommands::addCommon(CLI::App* cmd, Common& options, bool regions) {
@@ -170,21 +173,50 @@ void GeometryCommands::addCommon(CLI::App* cmd, Common& options, bool regions) {
       ->check(CLI::PositiveNumber);
 }
 
-void GeometryCommands::addGridScale(CLI::App* cmd) {
-  cmd->add_option("--grid-scale", grid_.scale,
-                  "grid units per coordinate unit (a power of two; |coordinate * scale| must "
-                  "stay <= 2^30)")
-      ->check(CLI::PositiveNumber)
+void GeometryCommands::addCoreOptions(CLI::App* cmd) {
+  const auto setGrid = [this](const std::string& text) {
+    if (text == "auto") {
+      options_.grid = Grid::fitted();
+      return;
+    }
+    double scale = 0;
+    std::size_t used = 0;
+    try {
+      scale = std::stod(text, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (used != text.size() || !(scale > 0) || !std::isfinite(scale)) {
+      throw CLI::ValidationError("--grid", "expected auto or a positive scale, got " + text);
+    }
+    options_.grid = Grid::fixed(scale);
+  };
+  cmd->add_option_function<std::string>(
+         "--grid", setGrid,
+         "auto (default): fitted to each call's operands, any finite coordinates, snapping by at "
+         "most ~2^-31 of the extent; or SCALE: one fixed grid of SCALE units per coordinate unit "
+         "(a power of two; |coordinate * SCALE| <= 2^30), identical snapping across calls")
+      ->default_str("auto");
+  cmd->add_option_function<std::string>("--grid-scale", setGrid, "the same as --grid SCALE")
+      ->group("");  // the old spelling, kept working
+  cmd->add_option("--max-crossings", options_.limits.maxCrossings,
+                  "give up (exit code 6) when the input has more crossings than this (each takes "
+                  "200 to 320 bytes while it runs)")
       ->capture_default_str();
+  cmd->add_flag("--strict", strict_,
+                "refuse rings with fewer than 3 distinct points and lines with fewer than 2 "
+                "points (by default they are ignored and counted as \"ignoredRings\")");
 }
 
 namespace {
 
 // An input read as features, warnings collected, dissolved on request.
 std::vector<io::Feature> readRegions(const std::string& file, const std::string& format,
-                                     bool dissolve, std::vector<io::Warning>& warnings) {
+                                     bool dissolve, bool strict,
+                                     std::vector<io::Warning>& warnings) {
   io::ReadOptions options;
   options.warnings = &warnings;
+  options.allowDegenerateRings = !strict;
   std::vector<io::Feature> features =
       io::readAnyFeatures(file, io::parseFormat(format.c_str()), options);
   if (dissolve) features = {io::dissolve(features)};
@@ -225,8 +257,20 @@ void refuseTwoStdins(const std::string& a, const std::string& b) {
 void GeometryCommands::execute() const {
   std::vector<io::Warning> warnings;
   const auto snapCheck = [&](const Paths& paths, const std::string& file) {
-    for (io::Warning& w : io::snapWarnings(paths, io::sourceName(file), grid_)) {
+    for (io::Warning& w : io::snapWarnings(paths, io::sourceName(file), options_.grid)) {
       warnings.push_back(std::move(w));
+    }
+  };
+  // Degenerate rings are ignored (not an error without --strict): one line per input says so.
+  const auto ignoredCheck = [&](const std::vector<io::Feature>& result, const std::string& file) {
+    std::size_t ignored = 0;
+    for (const io::Feature& f : result) ignored += f.ignoredRings;
+    if (ignored > 0) {
+      warnings.push_back({io::sourceName(file),
+                          "ignored " + std::to_string(ignored) +
+                              (ignored == 1 ? " ring" : " rings") +
+                              " with fewer than 3 distinct points or no area (--strict refuses "
+                              "them)"});
     }
   };
   const auto writeOptions = [](const Common& options) {
@@ -235,9 +279,10 @@ void GeometryCommands::execute() const {
   if (simplify_.cmd->parsed()) {
     const Simplify& s = simplify_;
     const FillRule rule = parseFillRule(s.rule.c_str());
-    const auto input = readRegions(s.input, s.inputFormat, s.dissolve, warnings);
+    const auto input = readRegions(s.input, s.inputFormat, s.dissolve, strict_, warnings);
     snapCheck(io::allRings(input), s.input);
-    auto result = io::simplifyFeatures(input, io::sourceName(s.input), rule, grid_);
+    auto result = io::simplifyFeatures(input, io::sourceName(s.input), rule, options_);
+    ignoredCheck(result, s.input);
     roundResults(result, input, s.roundTo);
     printWarnings(warnings);
     io::writeFeatures(result, s.output, io::parseFormat(s.format.c_str()), writeOptions(s));
@@ -249,12 +294,13 @@ void GeometryCommands::execute() const {
     const FillRule clipRule = parseFillRule((c.clipRule.empty() ? base : c.clipRule).c_str());
     const ClipOp op = parseClipOp(c.op.c_str());
     refuseTwoStdins(c.subject, c.clip);
-    const auto subject = readRegions(c.subject, c.inputFormat, c.dissolve, warnings);
-    const auto clipRegion = readRegions(c.clip, c.inputFormat, c.dissolve, warnings);
+    const auto subject = readRegions(c.subject, c.inputFormat, c.dissolve, strict_, warnings);
+    const auto clipRegion = readRegions(c.clip, c.inputFormat, c.dissolve, strict_, warnings);
     snapCheck(io::allRings(subject), c.subject);
     snapCheck(io::allRings(clipRegion), c.clip);
     auto result = io::clipFeatures(op, subject, io::sourceName(c.subject), clipRegion,
-                                   io::sourceName(c.clip), subjectRule, clipRule, grid_);
+                                   io::sourceName(c.clip), subjectRule, clipRule, options_);
+    ignoredCheck(result, c.subject);
     roundResults(result, subject, c.roundTo);
     printWarnings(warnings);
     io::writeFeatures(result, c.output, io::parseFormat(c.format.c_str()), writeOptions(c));
@@ -266,13 +312,14 @@ void GeometryCommands::execute() const {
     refuseTwoStdins(l.lines, l.region);
     io::ReadOptions options;
     options.warnings = &warnings;
+    options.allowDegenerateRings = !strict_;
     const io::Format inputFormat = io::parseFormat(l.inputFormat.c_str());
     const Paths lines = io::readAnyLines(l.lines, inputFormat, options);
     const Paths region = io::allRings(io::readAnyFeatures(l.region, inputFormat, options));
     snapCheck(lines, l.lines);
     snapCheck(region, l.region);
     const Paths result = clipLinesInputs(lines, io::sourceName(l.lines), region,
-                                         io::sourceName(l.region), rule, part, grid_);
+                                         io::sourceName(l.region), rule, part, options_);
     printWarnings(warnings);
     io::writeLines(result, l.output, io::parseFormat(l.format.c_str()));
   }

@@ -20,19 +20,19 @@ using io::Source;
 /// simplify() on paths read from `source`; an InvalidInputError from the core is rethrown naming
 /// `source` (nameSource()): "SOURCE: path i, vertex j: ...".
 PolygonSet simplifyInput(const Paths& paths, const std::string& source, FillRule rule,
-                         const Grid& grid = {});
+                         const Options& options = {});
 
 /// clip() on paths read from two sources; a core InvalidInputError gets the source of the operand
 /// it names (its location's operand), or both sources when it names none.
 PolygonSet clipInputs(ClipOp op, const Paths& subject, const std::string& subjectSource,
                       const Paths& clipPaths, const std::string& clipSource, FillRule subjectRule,
-                      FillRule clipRule, const Grid& grid = {});
+                      FillRule clipRule, const Options& options = {});
 
 /// clipLines() on polylines and region paths read from two sources; core InvalidInputErrors get
 /// the source of the operand they name (Operand::Line: the lines, Operand::Clip: the region).
 Paths clipLinesInputs(const Paths& lines, const std::string& linesSource, const Paths& region,
                       const std::string& regionSource, FillRule regionRule,
-                      LinePart part = LinePart::Inside, const Grid& grid = {});
+                      LinePart part = LinePart::Inside, const Options& options = {});
 
 /// The three geometry subcommands, added to `app` with their options bound to this object (which
 /// must outlive the parse).
@@ -79,11 +79,13 @@ class GeometryCommands {
     std::string rule = "evenodd";
   };
 
-  void addGridScale(CLI::App* cmd);
+  /// --grid auto|SCALE (and its old spelling --grid-scale), --max-crossings, --strict.
+  void addCoreOptions(CLI::App* cmd);
   /// -o, --format, --input-format; with `regions` also --orientation and --dissolve.
   static void addCommon(CLI::App* cmd, Common& options, bool regions);
 
-  Grid grid_;
+  Options options_{Grid::fitted(), Limits{Limits::kToolMaxCrossings}};
+  bool strict_ = false;  ///< refuse degenerate rings and lines (io::ReadOptions)
   Simplify simplify_;
   Clip clip_;
   ClipLines clipLines_;

@@ -30,6 +30,9 @@ int reportCurrentException() {
   } catch (const roiclip::InvalidInputError& e) {
     std::cerr << "roiclip: error: " << e.what() << "\n";
     return kExitBadInput;
+  } catch (const roiclip::ResourceLimitError& e) {
+    std::cerr << "roiclip: error: " << e.what() << "; raise it with --max-crossings\n";
+    return kExitLimit;
   } catch (const roiclip::InternalError& e) {
     std::cerr << "roiclip: internal error: " << e.what() << "\n";
     return kExitInternal;

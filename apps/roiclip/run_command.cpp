@@ -246,6 +246,10 @@ RunCommand::RunCommand(CLI::App& app) {
                    "header before decoding; 0 = no limit)")
       ->check(atLeastZero())
       ->capture_default_str();
+  cmd_->add_option("--max-crossings", p.limits.maxCrossings,
+                   "fail an image (too-large) when one of its clips finds more crossings (each "
+                   "takes 200 to 320 bytes while it runs)")
+      ->capture_default_str();
 
   cmd_->add_option("-j,--jobs", options_.jobs, "images in parallel (0 = all cores)")
       ->check(atLeastZero())

@@ -103,6 +103,27 @@ class InvalidInputError : public Error {
   std::string problem_;
 };
 
+/// A call reached one of its work limits (roiclip::Limits) and gave up before taking the memory
+/// the rest of the work would need. Nothing is returned; the caller may retry with a larger limit.
+/// what() is formatted from the fields: "more than 1000 crossings (the limit maxCrossings)".
+class ResourceLimitError : public Error {
+ public:
+  /// The limit named `limit` (a Limits member, "maxCrossings") of `value` was exceeded by work
+  /// counted as `what` ("crossings").
+  ResourceLimitError(std::string limit, std::uint64_t value, const std::string& what)
+      : Error("more than " + std::to_string(value) + " " + what + " (the limit " + limit + ")"),
+        limit_(std::move(limit)),
+        value_(value) {}
+  /// The name of the limit that was reached ("maxCrossings").
+  [[nodiscard]] const std::string& limit() const noexcept { return limit_; }
+  /// Its value.
+  [[nodiscard]] std::uint64_t value() const noexcept { return value_; }
+
+ private:
+  std::string limit_;
+  std::uint64_t value_ = 0;
+};
+
 /// An internal consistency check failed. This is a bug in roiclip; please report the input.
 class InternalError : public Error {
  public:

@@ -3,10 +3,20 @@
 //
 // Conventions (the same everywhere in roiclip):
 // - Image coordinates: x to the right, y DOWN, in pixels; (0,0) is the centre of the top-left
-//   pixel, as in OpenCV.
-// - Coordinates are snapped to a fixed-point grid of 1/Grid::scale pixel (default 1/256 px) and
-//   must satisfy |coordinate * scale| <= Grid::kMaxUnits (2^30), i.e. |x|,|y| <= 4,194,304 px at
-//   the default scale. Every topological decision after snapping is exact (no epsilon).
+//   pixel, as in OpenCV. Map coordinates (UTM metres, longitude/latitude) work the same way.
+// - Coordinates are snapped to an integer grid: a point's grid units are
+//   round(coordinate * scale) - origin * scale (nearest integer, ties to even), and they must lie
+//   within +-Grid::kMaxUnits (2^30) of the origin. By default (Grid::fitted()) each call fits the
+//   grid to the bounding box of all its operands: the origin is a grid point near the box's
+//   centre and the scale the largest power of two that keeps the box inside that range. So any
+//   finite double input is accepted wherever it lies, integer (pixel) coordinates stay exact, and
+//   no coordinate moves by more than half a grid step, about 2^-31 of the box's larger side
+//   (docs/algorithm.md, "Grid", has the bound).
+//   Grid::fixed(scale) keeps one grid for every call (bit-identical snapping across calls;
+//   |coordinate * scale| <= 2^30). Every topological decision after snapping is exact.
+// - Output vertices are exact points (input vertices or crossings of input edges) rounded once:
+//   each coordinate is the double nearest its exact value (ties to even), so equal exact points
+//   always give equal doubles.
 // - Winding numbers are the mathematical ones computed on the raw (x, y) numbers: a path whose
 //   shoelace sum  sum(x_i*y_{i+1} - x_{i+1}*y_i)  is positive winds +1 around its interior.
 //   On screen (y down) such a path runs clockwise.
@@ -14,7 +24,10 @@
 //   (counter-clockwise on screen, cv::contourArea(c, true) < 0) and holes a POSITIVE one.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
+#include <limits>
+#include <optional>
 #include <vector>
 
 #include <glm/vec2.hpp>
@@ -44,13 +57,91 @@ enum class ClipOp {
   Xor,           ///< subject XOR clip
 };
 
-/// The fixed-point grid every input coordinate is snapped to.
+namespace detail {
+/// The nearest integer to u, ties to even (Grid::toUnits()). Adding and subtracting 1.5 * 2^52
+/// rounds any |u| < 2^51 exactly in the default rounding mode, without a libm call; larger
+/// doubles go through nearbyint (from 2^52 on they are integers already).
+inline double roundToUnits(double u) {
+  constexpr double kRound = 6755399441055744.0;  // 1.5 * 2^52
+  // Not algebraically simplified: without -ffast-math the compiler keeps IEEE semantics.
+  if (std::fabs(u) < 0x1p51) return (u + kRound) - kRound;
+  return std::nearbyint(u);
+}
+}  // namespace detail
+
+/// The integer grid every input coordinate is snapped to (see the conventions above).
 struct Grid {
-  /// Largest allowed |coordinate * scale|.
+  /// Largest allowed |grid units| of a coordinate, counted from the origin.
   static constexpr std::int64_t kMaxUnits = std::int64_t{1} << 30;
-  /// Grid units per pixel. Must be positive and finite; a power of two keeps snapping exact for
-  /// pixel and half-pixel coordinates.
-  double scale = 256.0;
+  /// Grid units per coordinate unit; 0 (the default) means fitted: every call chooses the scale
+  /// and origin for its operands (a power of two, see the conventions). A fixed scale must be
+  /// positive and finite; a power of two keeps snapping exact for pixel and half-pixel
+  /// coordinates.
+  double scale = 0.0;
+  /// The grid point units are counted from. It must lie on the grid (origin * scale an integer,
+  /// of magnitude at most 2^100). Ignored while the grid is fitted.
+  Point origin{0.0, 0.0};
+
+  /// The default: fitted to each call's operands.
+  static Grid fitted() { return {}; }
+  /// One grid for every call: `scale` units per coordinate unit, counted from `origin`.
+  static Grid fixed(double scale, Point origin = {0.0, 0.0}) {
+    Grid grid;
+    grid.scale = scale;
+    grid.origin = origin;
+    return grid;
+  }
+  /// True for a fitted grid (scale 0).
+  [[nodiscard]] bool isFitted() const { return scale == 0.0; }
+
+  /// The snapping rule, the one used everywhere (core, rasteriser, io's snap check): the grid
+  /// units of a coordinate on a fixed (or resolved, resolveGrid()) grid,
+  /// round(v * scale) - originCoordinate * scale, rounded to the nearest integer, ties to even.
+  /// `originCoordinate` is origin.x for x and origin.y for y.
+  /// @return nullopt when v is not finite or its units lie beyond +-kMaxUnits.
+  [[nodiscard]] std::optional<std::int64_t> toUnits(double v, double originCoordinate) const;
+  /// The coordinate of grid unit `units` (origin + units / scale), correctly rounded.
+  [[nodiscard]] double toCoordinate(std::int64_t units, double originCoordinate) const;
+};
+
+inline std::optional<std::int64_t> Grid::toUnits(double v, double originCoordinate) const {
+  const double r = detail::roundToUnits(v * scale);
+  // Both are integers, so the difference is exact whenever it is below 2^53, and so is the range
+  // test. Infinity and NaN fail it.
+  const double d = r - originCoordinate * scale;
+  if (!(std::fabs(d) <= double(kMaxUnits))) return std::nullopt;
+  return std::int64_t(d);
+}
+
+/// The grid a call with these operands snaps to: `grid` itself when it is fixed, else the grid
+/// fitted to the bounding box of every finite vertex of `subject` and `clip` together.
+/// @throws InvalidInputError when a fixed grid is invalid (scale not positive and finite, origin
+///         off the grid) or the box is too large for doubles (its side overflows).
+Grid resolveGrid(const Grid& grid, const Paths& subject, const Paths& clip = {});
+
+/// How much work one call may do before it gives up with ResourceLimitError (error.hpp), checked
+/// as the work is found, before its memory is taken.
+struct Limits {
+  /// No limit.
+  static constexpr std::uint64_t kUnlimited = std::numeric_limits<std::uint64_t>::max();
+  /// The crossing budget roiclip's tools set by default (the CLI per call, `roiclip run` per
+  /// clip of an image): at 200 to 320 bytes per crossing, about 5 to 8 GB.
+  static constexpr std::uint64_t kToolMaxCrossings = 25'000'000;
+  /// Crossings of edges the sweep may find (each costs about 200 to 320 bytes while the call
+  /// runs). Unlimited by default in the library; the CLI and `roiclip run` set 25,000,000.
+  std::uint64_t maxCrossings = kUnlimited;
+};
+
+/// The numeric set-up of a call: the grid and the work limits. A Grid converts to Options (no
+/// limits), so every function that takes Options also takes a Grid.
+struct Options {
+  Grid grid;      ///< the snapping grid (fitted by default)
+  Limits limits;  ///< the work budget (unlimited by default)
+  /// A fitted grid, no limits.
+  Options() = default;
+  /// `g` with `l` (implicit, so that a Grid can be passed where Options are taken).
+  Options(const Grid& g, const Limits& l = {})  // NOLINT(google-explicit-constructor)
+      : grid(g), limits(l) {}
 };
 
 /// One connected filled region: an outer ring and the holes inside it. Rings are simple (no

@@ -18,66 +18,72 @@ namespace roiclip {
 /// @param paths closed paths; a path with fewer than 3 distinct grid points, or with zero area,
 ///        contributes nothing (it is not an error).
 /// @param rule  fill rule applied to the winding number of all paths together.
-/// @param grid  snapping grid (default 1/256 px).
-/// @return outer rings (negative shoelace sum) and holes (positive), nested as a forest.
-/// @throws InvalidInputError on NaN, infinity, or a coordinate outside the grid's range; the
-///         message names the path and vertex index.
-PolygonSet simplify(const Paths& paths, FillRule rule, const Grid& grid = {});
+/// @param options the snapping grid (default: fitted to the call's operands, see geometry.hpp)
+///        and the work limits (default: none). A Grid alone converts to Options.
+/// @return outer rings (negative shoelace sum) and holes (positive), nested as a forest; every
+///         coordinate is the double nearest its exact value.
+/// @throws InvalidInputError on NaN, infinity, a coordinate outside a fixed grid's range, or a
+///         bounding box too large for doubles; the message names the path and vertex index.
+/// @throws ResourceLimitError when the sweep finds more than options.limits.maxCrossings
+///         crossings (before their memory is taken).
+PolygonSet simplify(const Paths& paths, FillRule rule, const Options& options = {});
 
 /// Boolean operation between two path sets, each read with its own fill rule:
 /// the result covers exactly { p : op(subjectRule(w_subject(p)), clipRule(w_clip(p))) }.
 /// Both operands may self-intersect, overlap, share vertices and edges, or contain holes.
-/// @throws InvalidInputError as simplify().
+/// The grid is fitted to both operands together.
+/// @throws InvalidInputError, ResourceLimitError as simplify().
 PolygonSet clip(ClipOp op, const Paths& subject, const Paths& clip, FillRule subjectRule,
-                FillRule clipRule, const Grid& grid = {});
+                FillRule clipRule, const Options& options = {});
 
 /// Shorthands for clip() with one fill rule for both operands.
 PolygonSet intersect(const Paths& subject, const Paths& clip, FillRule rule = FillRule::EvenOdd,
-                     const Grid& grid = {});
+                     const Options& options = {});
 PolygonSet unite(const Paths& subject, const Paths& clip, FillRule rule = FillRule::EvenOdd,
-                 const Grid& grid = {});
+                 const Options& options = {});
 PolygonSet subtract(const Paths& subject, const Paths& clip, FillRule rule = FillRule::EvenOdd,
-                    const Grid& grid = {});
+                    const Options& options = {});
 PolygonSet symmetricDifference(const Paths& subject, const Paths& clip,
-                               FillRule rule = FillRule::EvenOdd, const Grid& grid = {});
+                               FillRule rule = FillRule::EvenOdd, const Options& options = {});
 
 /// PolygonSet operands: a PolygonSet (e.g. an earlier result) as the subject and/or the clip.
 /// A PolygonSet operand is read as its rings (set.toPaths()) under kPolygonSetFillRule
 /// (FillRule::NonZero; its rings are simple and nested, so EvenOdd would give the same region,
 /// see geometry.hpp), and the result is exactly that of clip() on those paths. The other
-/// operand's rule is given as usual. Like any input, the set's vertices are snapped to `grid`
-/// first: a result's crossing vertices lie off the grid (exact doubles), so feeding a result back
-/// moves them by up to half a grid unit per axis. An InvalidInputError names a ring by its index
-/// in set.toPaths() ("subject path 2, ...").
+/// operand's rule is given as usual. Like any input, the set's vertices are snapped to the grid
+/// first: a result's crossing vertices lie off the grid (the doubles nearest the exact points),
+/// so feeding a result back moves them by up to half a grid unit per axis. An InvalidInputError
+/// names a ring by its index in set.toPaths() ("subject path 2, ...").
 PolygonSet clip(ClipOp op, const PolygonSet& subject, const Paths& clip, FillRule clipRule,
-                const Grid& grid = {});
+                const Options& options = {});
 PolygonSet clip(ClipOp op, const Paths& subject, const PolygonSet& clip, FillRule subjectRule,
-                const Grid& grid = {});
+                const Options& options = {});
 PolygonSet clip(ClipOp op, const PolygonSet& subject, const PolygonSet& clip,
-                const Grid& grid = {});
+                const Options& options = {});
 
 /// Shorthands for the PolygonSet operand clip()s above; `rule` is the Paths operand's rule.
 PolygonSet intersect(const PolygonSet& subject, const Paths& clip,
-                     FillRule rule = FillRule::EvenOdd, const Grid& grid = {});
+                     FillRule rule = FillRule::EvenOdd, const Options& options = {});
 PolygonSet intersect(const Paths& subject, const PolygonSet& clip,
-                     FillRule rule = FillRule::EvenOdd, const Grid& grid = {});
-PolygonSet intersect(const PolygonSet& subject, const PolygonSet& clip, const Grid& grid = {});
+                     FillRule rule = FillRule::EvenOdd, const Options& options = {});
+PolygonSet intersect(const PolygonSet& subject, const PolygonSet& clip,
+                     const Options& options = {});
 PolygonSet unite(const PolygonSet& subject, const Paths& clip, FillRule rule = FillRule::EvenOdd,
-                 const Grid& grid = {});
+                 const Options& options = {});
 PolygonSet unite(const Paths& subject, const PolygonSet& clip, FillRule rule = FillRule::EvenOdd,
-                 const Grid& grid = {});
-PolygonSet unite(const PolygonSet& subject, const PolygonSet& clip, const Grid& grid = {});
+                 const Options& options = {});
+PolygonSet unite(const PolygonSet& subject, const PolygonSet& clip, const Options& options = {});
 PolygonSet subtract(const PolygonSet& subject, const Paths& clip, FillRule rule = FillRule::EvenOdd,
-                    const Grid& grid = {});
+                    const Options& options = {});
 PolygonSet subtract(const Paths& subject, const PolygonSet& clip, FillRule rule = FillRule::EvenOdd,
-                    const Grid& grid = {});
-PolygonSet subtract(const PolygonSet& subject, const PolygonSet& clip, const Grid& grid = {});
+                    const Options& options = {});
+PolygonSet subtract(const PolygonSet& subject, const PolygonSet& clip, const Options& options = {});
 PolygonSet symmetricDifference(const PolygonSet& subject, const Paths& clip,
-                               FillRule rule = FillRule::EvenOdd, const Grid& grid = {});
+                               FillRule rule = FillRule::EvenOdd, const Options& options = {});
 PolygonSet symmetricDifference(const Paths& subject, const PolygonSet& clip,
-                               FillRule rule = FillRule::EvenOdd, const Grid& grid = {});
+                               FillRule rule = FillRule::EvenOdd, const Options& options = {});
 PolygonSet symmetricDifference(const PolygonSet& subject, const PolygonSet& clip,
-                               const Grid& grid = {});
+                               const Options& options = {});
 
 /// Snap-round a region onto the grid of multiples of `step` (1: integer pixels for
 /// cv::fillPoly / cv::drawContours; 1.0 / 256; 1e-6 for GIS), keeping its topology.
@@ -120,42 +126,46 @@ enum class LinePart {
 /// @throws InvalidInputError as simplify() (lines are named "line path i", region paths
 ///         "clip path i").
 Paths clipLines(const Paths& lines, const Paths& region, FillRule regionRule,
-                LinePart part = LinePart::Inside, const Grid& grid = {});
+                LinePart part = LinePart::Inside, const Options& options = {});
 const char* toString(LinePart part);
 
 /// A clip region prepared once (snapped, validated, its convexity found) and applied to many
-/// subjects, e.g. one ROI and every contour of a video frame. Each call gives exactly what the
-/// free function with the same arguments gives (`region` as the clip operand), without reading
-/// the region again, and works in memory the object owns and keeps between calls (its largest
-/// call's working arrays, up to 64 MiB per array), so a loop over small subjects does not
-/// allocate working memory. Calls on one object from several threads at once are safe (a call
-/// that finds the object's memory in use works in memory of its own). An exception thrown by
-/// a call leaves the object usable.
+/// subjects, e.g. one ROI and every contour of a video frame. Each call gives what the free
+/// function with the same arguments gives (`region` as the clip operand), without reading the
+/// region again (exactly the same with a fixed grid; with the default fitted grid the region's
+/// grid is fitted to its bounding box grown by twice its side on every side, so results are the
+/// same wherever the coordinates lie on both grids, e.g. for pixel coordinates, and a subject
+/// reaching beyond that box is clipped by the free function), and works in memory the object owns
+/// and keeps between calls (its largest call's working arrays, up to 64 MiB per array), so a loop
+/// over small subjects does not allocate working memory. Calls on one object from several threads
+/// at once are safe (a call that finds the object's memory in use works in memory of its own). An
+/// exception thrown by a call leaves the object usable.
 class PreparedRegion {
  public:
   /// @param region closed paths, read with `rule`; may self-intersect.
   /// @param rule   the region's fill rule.
-  /// @param grid   snapping grid; every subject is snapped to it too.
+  /// @param options snapping grid (every subject is snapped to it too) and work limits (per
+  ///        call).
   /// @throws InvalidInputError as simplify() (region paths are named "clip path i").
   explicit PreparedRegion(const Paths& region, FillRule rule = FillRule::EvenOdd,
-                          const Grid& grid = {});
+                          const Options& options = {});
   /// A PolygonSet region, read as its rings under kPolygonSetFillRule (as the clip() overloads).
-  explicit PreparedRegion(const PolygonSet& region, const Grid& grid = {});
+  explicit PreparedRegion(const PolygonSet& region, const Options& options = {});
   ~PreparedRegion();
   PreparedRegion(PreparedRegion&& other) noexcept;             ///< takes over other's region
   PreparedRegion& operator=(PreparedRegion&& other) noexcept;  ///< takes over other's region
   PreparedRegion(const PreparedRegion&) = delete;
   PreparedRegion& operator=(const PreparedRegion&) = delete;
 
-  /// clip(op, subject, region, subjectRule, rule, grid).
+  /// clip(op, subject, region, subjectRule, rule, options).
   [[nodiscard]] PolygonSet clip(ClipOp op, const Paths& subject,
                                 FillRule subjectRule = FillRule::EvenOdd) const;
-  /// clip(op, subject, region, rule, grid) for a PolygonSet subject.
+  /// clip(op, subject, region, rule, options) for a PolygonSet subject.
   [[nodiscard]] PolygonSet clip(ClipOp op, const PolygonSet& subject) const;
-  /// clip(ClipOp::Intersection, subject, region, subjectRule, rule, grid).
+  /// clip(ClipOp::Intersection, subject, region, subjectRule, rule, options).
   [[nodiscard]] PolygonSet intersect(const Paths& subject,
                                      FillRule subjectRule = FillRule::EvenOdd) const;
-  /// clipLines(lines, region, rule, part, grid).
+  /// clipLines(lines, region, rule, part, options).
   [[nodiscard]] Paths clipLines(const Paths& lines, LinePart part = LinePart::Inside) const;
 
   /// True when the region is a single strictly convex ring (intersections take the linear
@@ -168,6 +178,13 @@ class PreparedRegion {
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
+
+/// How many of `paths` contribute nothing to any region: after snapping to `grid` (a resolved
+/// grid, resolveGrid(): the one the call fits to all its operands), all of a path's points lie
+/// on one line (fewer than 3 distinct points, spikes, zero area). Such paths are ignored by every
+/// operation; the CLI reports them as "ignoredRings".
+/// @throws InvalidInputError as simplify() on NaN, infinity or a coordinate off the grid's range.
+std::size_t countDegeneratePaths(const Paths& paths, const Grid& grid);
 
 /// Free the working arrays the calling thread keeps for the free functions above (its largest
 /// call's, up to 64 MiB per array; freed anyway when the thread exits). The next call allocates

@@ -147,6 +147,8 @@ class Pipeline {
   }
 
   [[nodiscard]] const RunOptions& options() const { return options_; }
+  /// The grid and work budget of every clip of an image.
+  [[nodiscard]] Options coreOptions() const { return {options_.grid, options_.limits}; }
 
   void run(const cv::Mat& image, ImageResult& r, detail::CoreCalls& calls) const {
     const auto start = Clock::now();
@@ -158,7 +160,7 @@ class Pipeline {
     detectTags(gray, r);
     if (buildRoi(r, calls)) {
       const std::vector<opencv::ContourGroup> groups = findContours(gray, r);
-      const PreparedRegion roi(r.roi, FillRule::EvenOdd, options_.grid);  // once per image
+      const PreparedRegion roi(r.roi, FillRule::EvenOdd, coreOptions());  // once per image
       const Paths all = clipContours(groups, roi, r, calls);
       if (options_.contours.openEdges) clipEdges(gray, roi, r, calls);
       checkMasks(all, r);
@@ -217,7 +219,7 @@ class Pipeline {
       region.name = name;
       region.paths = roi.value();
       ++calls.simplify;
-      const PolygonSet simple = simplify(region.paths, options_.roiFillRule, options_.grid);
+      const PolygonSet simple = simplify(region.paths, options_.roiFillRule, coreOptions());
       region.region = simple.toPaths();
       region.area = simple.area();
       r.rois.push_back(std::move(region));
@@ -229,7 +231,7 @@ class Pipeline {
         all.insert(all.end(), r.rois[i].region.begin(), r.rois[i].region.end());
       }
       ++calls.simplify;
-      const PolygonSet united = simplify(all, FillRule::NonZero, options_.grid);
+      const PolygonSet united = simplify(all, FillRule::NonZero, coreOptions());
       all = united.toPaths();
       allArea = united.area();
     }
@@ -242,7 +244,7 @@ class Pipeline {
       const auto minusTags = [&](const Paths& region) {
         ++calls.clip;
         return clip(ClipOp::Difference, region, r.excludedTags, FillRule::EvenOdd,
-                    FillRule::NonZero, options_.grid);
+                    FillRule::NonZero, coreOptions());
       };
       const PolygonSet region = minusTags(all);
       r.roi = region.toPaths();
@@ -284,7 +286,7 @@ class Pipeline {
     if (r.rois.size() > 1) {
       perRoi.reserve(r.rois.size());
       for (const RoiRegion& one : r.rois)
-        perRoi.emplace_back(one.region, FillRule::EvenOdd, options_.grid);
+        perRoi.emplace_back(one.region, FillRule::EvenOdd, coreOptions());
     }
     for (const opencv::ContourGroup& group : groups) {
       ContourResult c;
@@ -292,7 +294,7 @@ class Pipeline {
       c.input = group.rings;
       if (options_.contours.approxEpsilon > 0) {  // approxPolyDP output may cross itself
         ++calls.simplify;
-        c.inputArea = simplify(c.input, rule, options_.grid).area();
+        c.inputArea = simplify(c.input, rule, coreOptions()).area();
       } else {
         c.inputArea = opencv::pixelContourArea(group);
       }
@@ -387,6 +389,9 @@ ImageResult runCaught(const Pipeline& pipeline, const cv::Mat& image, detail::Co
   } catch (const ImageTooLargeError& e) {
     r.failure = FailureKind::TooLarge;
     r.reason = e.what();
+  } catch (const ResourceLimitError& e) {  // ProcessOptions::limits
+    r.failure = FailureKind::TooLarge;
+    r.reason = std::string("clipping: ") + e.what() + " (--max-crossings)";
   } catch (const InvalidInputError& e) {
     r.failure = FailureKind::InvalidInput;
     r.reason = e.what();

@@ -21,10 +21,11 @@ PolygonSet resolve(const std::vector<InputEdge>& edges, const std::vector<ExactE
 
 // Intersection with one convex ring: pre-clip the other operand to it, then resolve that alone.
 PolygonSet intersectConvexRing(const SnappedOperand& other, const SnappedOperand& convex,
-                               const Grid& grid, Workspace& ws) {
+                               const Grid& grid, const Limits& limits, Workspace& ws) {
   if (!isFilled(convex.rule, convex.convex)) return {};
   BooleanSpec spec;
   spec.subjectRule = other.rule;
+  spec.maxCrossings = limits.maxCrossings;
   preclipConvex(other.rings, convex.rings[0], convex.convex, ws, ws.clipped);
   ws.edges.clear();
   return resolve(ws.edges, ws.clipped, spec, grid, ws);
@@ -55,13 +56,14 @@ SnappedOperand snapOperand(const Paths& paths, int operand, FillRule rule, const
 }
 
 PolygonSet clipSnapped(ClipOp op, SnappedOperand& subject, const SnappedOperand& clip,
-                       const Grid& grid, Workspace& ws) {
+                       const Grid& grid, const Limits& limits, Workspace& ws) {
   if (op == ClipOp::Intersection) {
     // The region-of-interest case: a convex operand takes the linear pre-clip path.
-    if (clip.convex != 0) return intersectConvexRing(subject, clip, grid, ws);
-    if (subject.convex != 0) return intersectConvexRing(clip, subject, grid, ws);
+    if (clip.convex != 0) return intersectConvexRing(subject, clip, grid, limits, ws);
+    if (subject.convex != 0) return intersectConvexRing(clip, subject, grid, limits, ws);
   }
   BooleanSpec spec;
+  spec.maxCrossings = limits.maxCrossings;
   spec.binary = true;
   spec.op = op;
   spec.subjectRule = subject.rule;
@@ -81,14 +83,16 @@ PolygonSet booleanGeneral(const Paths& subject, const Paths* clipPaths, const Bo
 
 void releaseThreadBuffers() { detail::releaseThreadWorkspace(); }
 
-PolygonSet simplify(const Paths& paths, FillRule rule, const Grid& grid) {
+PolygonSet simplify(const Paths& paths, FillRule rule, const Options& options) {
   detail::BooleanSpec spec;
   spec.subjectRule = rule;
-  return detail::booleanGeneral(paths, nullptr, spec, grid);
+  spec.maxCrossings = options.limits.maxCrossings;
+  return detail::booleanGeneral(paths, nullptr, spec, resolveGrid(options.grid, paths));
 }
 
 PolygonSet clip(ClipOp op, const Paths& subject, const Paths& clipPaths, FillRule subjectRule,
-                FillRule clipRule, const Grid& grid) {
+                FillRule clipRule, const Options& options) {
+  const Grid grid = resolveGrid(options.grid, subject, clipPaths);  // one grid for both operands
   // Each operand is snapped and validated once; an intersection reads the clip first (its
   // errors are reported first, as the ROI is usually the clip).
   detail::SnappedOperand s, c;
@@ -100,22 +104,24 @@ PolygonSet clip(ClipOp op, const Paths& subject, const Paths& clipPaths, FillRul
     c = detail::snapOperand(clipPaths, 1, clipRule, grid);
   }
   const detail::WorkspaceLease ws;
-  return detail::clipSnapped(op, s, c, grid, *ws);
+  return detail::clipSnapped(op, s, c, grid, options.limits, *ws);
 }
 
 PolygonSet intersect(const Paths& subject, const Paths& clipPaths, FillRule rule,
-                     const Grid& grid) {
-  return clip(ClipOp::Intersection, subject, clipPaths, rule, rule, grid);
+                     const Options& options) {
+  return clip(ClipOp::Intersection, subject, clipPaths, rule, rule, options);
 }
-PolygonSet unite(const Paths& subject, const Paths& clipPaths, FillRule rule, const Grid& grid) {
-  return clip(ClipOp::Union, subject, clipPaths, rule, rule, grid);
+PolygonSet unite(const Paths& subject, const Paths& clipPaths, FillRule rule,
+                 const Options& options) {
+  return clip(ClipOp::Union, subject, clipPaths, rule, rule, options);
 }
-PolygonSet subtract(const Paths& subject, const Paths& clipPaths, FillRule rule, const Grid& grid) {
-  return clip(ClipOp::Difference, subject, clipPaths, rule, rule, grid);
+PolygonSet subtract(const Paths& subject, const Paths& clipPaths, FillRule rule,
+                    const Options& options) {
+  return clip(ClipOp::Difference, subject, clipPaths, rule, rule, options);
 }
 PolygonSet symmetricDifference(const Paths& subject, const Paths& clipPaths, FillRule rule,
-                               const Grid& grid) {
-  return clip(ClipOp::Xor, subject, clipPaths, rule, rule, grid);
+                               const Options& options) {
+  return clip(ClipOp::Xor, subject, clipPaths, rule, rule, options);
 }
 
 }  // namespace roiclip

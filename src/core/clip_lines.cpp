@@ -12,6 +12,7 @@
 
 #include <roiclip/roiclip.hpp>
 
+#include "output.hpp"
 #include "pipeline.hpp"
 #include "workspace.hpp"
 
@@ -23,7 +24,7 @@ class LineAssembler {
  public:
   LineAssembler(const std::vector<OpenPiece>& pieces, std::size_t edgeCount, LinePart part,
                 const Grid& grid)
-      : pieces_(pieces), part_(part), inv_(1.0 / grid.scale) {
+      : pieces_(pieces), part_(part), frame_(grid) {
     // Group the pieces by edge, keeping the sweep order (left to right) within each edge.
     first_.assign(edgeCount + 1, 0);
     for (const OpenPiece& piece : pieces) ++first_[std::size_t(piece.edge) + 1];
@@ -86,11 +87,11 @@ class LineAssembler {
   static IPoint pointAt(const InputEdge& e, bool start) {
     return (e.direction > 0) == start ? e.a : e.b;
   }
-  void push(Path& path, const XPoint& p) const { path.emplace_back(p.fx * inv_, p.fy * inv_); }
+  void push(Path& path, const XPoint& p) const { path.push_back(frame_.point(p)); }
 
   const std::vector<OpenPiece>& pieces_;
   LinePart part_;
-  double inv_;
+  OutputFrame frame_;
   std::vector<std::size_t> first_;
   std::vector<int> order_;
 };
@@ -144,7 +145,7 @@ namespace detail {
 
 Paths clipLinesSnapped(std::vector<InputEdge>& edges, const std::vector<std::size_t>& firstEdge,
                        const SnappedOperand& region, LinePart part, const Grid& grid,
-                       Workspace& workspace) {
+                       const Limits& limits, Workspace& workspace) {
   const std::size_t lineEdges = edges.size();
   std::vector<OpenPiece> pieces;
   if (region.convex != 0) {
@@ -158,6 +159,7 @@ Paths clipLinesSnapped(std::vector<InputEdge>& edges, const std::vector<std::siz
     spec.op = ClipOp::Union;
     spec.clipRule = region.rule;
     spec.keepBoundary = false;
+    spec.maxCrossings = limits.maxCrossings;
     pieces = splitEdges(edges, {}, spec, workspace).openPieces;
   }
 
@@ -172,7 +174,8 @@ Paths clipLinesSnapped(std::vector<InputEdge>& edges, const std::vector<std::siz
 }  // namespace detail
 
 Paths clipLines(const Paths& lines, const Paths& region, FillRule regionRule, LinePart part,
-                const Grid& grid) {
+                const Options& options) {
+  const Grid grid = resolveGrid(options.grid, lines, region);
   // Lines are read first (their errors come first); region paths are operand 1 so that errors
   // name them "clip".
   std::vector<detail::InputEdge> edges;
@@ -180,7 +183,8 @@ Paths clipLines(const Paths& lines, const Paths& region, FillRule regionRule, Li
   detail::appendLineEdges(lines, grid, edges, firstEdge);
   const detail::SnappedOperand snapped = detail::snapOperand(region, 1, regionRule, grid);
   const detail::WorkspaceLease workspace;
-  return detail::clipLinesSnapped(edges, firstEdge, snapped, part, grid, *workspace);
+  return detail::clipLinesSnapped(edges, firstEdge, snapped, part, grid, options.limits,
+                                  *workspace);
 }
 
 const char* toString(LinePart part) { return part == LinePart::Inside ? "inside" : "outside"; }

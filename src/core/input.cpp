@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: MIT
-// Stage 0: validate input paths and snap them to the integer grid.
+// Stage 0: validate input paths and snap them to the call's integer grid (resolveGrid()).
 #include <cmath>
+#include <optional>
 #include <string>
 
 #include <roiclip/error.hpp>
+#include <roiclip/roiclip.hpp>
 
 #include "pipeline.hpp"
 
@@ -12,25 +14,23 @@ namespace {
 
 // `label` names the operand in the error; the core's operand index (0 or 1, pipeline.hpp) is
 // not a label, since polylines are operand 0 too.
-[[noreturn]] void rejectCoordinate(double v, double scale, Axis axis, std::size_t pathIndex,
-                                   std::size_t vertexIndex, Operand label) {
+[[noreturn]] void rejectCoordinate(double v, const Grid& grid, double originCoordinate, Axis axis,
+                                   std::size_t pathIndex, std::size_t vertexIndex, Operand label) {
   const InputLocation where{"", label, pathIndex, vertexIndex, axis};
   if (!std::isfinite(v)) throw InvalidInputError(where, "is not a finite number");
-  throw InvalidInputError(where, "= " + std::to_string(v) + " is outside the supported range +-" +
-                                     std::to_string(double(Grid::kMaxUnits) / scale));
+  const std::string range = std::to_string(double(Grid::kMaxUnits) / grid.scale);
+  throw InvalidInputError(
+      where, "= " + std::to_string(v) + " is outside the supported range " +
+                 (originCoordinate == 0.0 ? "+-" + range
+                                          : std::to_string(originCoordinate) + " +- " + range));
 }
 
-// Round to the nearest grid unit, ties to even. Adding and subtracting 1.5 * 2^52 rounds any
-// |u| < 2^51 exactly in the default rounding mode, without a libm call.
-inline std::int64_t snap(double v, double scale, Axis axis, std::size_t pathIndex,
-                         std::size_t vertexIndex, Operand label) {
-  const double u = v * scale;
-  if (!(std::fabs(u) <= double(Grid::kMaxUnits))) {  // also NaN and infinity
-    rejectCoordinate(v, scale, axis, pathIndex, vertexIndex, label);
-  }
-  constexpr double kRound = 6755399441055744.0;  // 1.5 * 2^52
-  // Not algebraically simplified: without -ffast-math the compiler keeps IEEE semantics.
-  return std::int64_t((u + kRound) - kRound);
+// The grid units of one coordinate (Grid::toUnits(), the one snapping rule).
+inline std::int64_t snap(double v, const Grid& grid, double originCoordinate, Axis axis,
+                         std::size_t pathIndex, std::size_t vertexIndex, Operand label) {
+  const std::optional<std::int64_t> units = grid.toUnits(v, originCoordinate);
+  if (!units) rejectCoordinate(v, grid, originCoordinate, axis, pathIndex, vertexIndex, label);
+  return *units;
 }
 
 // True when b lies on the way from a to c, going straight on (exact).
@@ -70,17 +70,15 @@ void snapPath(const Path& path, std::size_t pathIndex, Operand label, const Grid
               std::vector<IPoint>& out) {
   out.clear();
   for (std::size_t i = 0; i < path.size(); ++i) {
-    const IPoint q{snap(path[i].x, grid.scale, Axis::X, pathIndex, i, label),
-                   snap(path[i].y, grid.scale, Axis::Y, pathIndex, i, label)};
+    const IPoint q{snap(path[i].x, grid, grid.origin.x, Axis::X, pathIndex, i, label),
+                   snap(path[i].y, grid, grid.origin.y, Axis::Y, pathIndex, i, label)};
     if (out.empty() || out.back() != q) out.push_back(q);
   }
 }
 
+// The stages take the grid resolveGrid() chose for the call.
 void checkGrid(const Grid& grid) {
-  if (!(grid.scale > 0.0) || !std::isfinite(grid.scale)) {
-    throw InvalidInputError("grid scale must be positive and finite, got " +
-                            std::to_string(grid.scale));
-  }
+  if (grid.isFitted()) throw InternalError("input: the grid was not resolved for the call");
 }
 
 }  // namespace
@@ -96,6 +94,25 @@ std::vector<std::vector<IPoint>> snapRings(const Paths& paths, int operand, cons
     if (ring.size() >= 2) rings.push_back(ring);  // a point encloses nothing
   }
   return rings;
+}
+
+std::size_t countDegenerate(const Paths& paths, const Grid& grid) {
+  checkGrid(grid);
+  std::size_t count = 0;
+  std::vector<IPoint> ring;
+  for (std::size_t p = 0; p < paths.size(); ++p) {
+    snapPath(paths[p], p, Operand::Subject, grid, ring);
+    // Degenerate when every point lies on the line through the first two distinct ones.
+    bool flat = true;
+    for (std::size_t i = 1; i < ring.size() && flat; ++i) {
+      if (ring[i] != ring[0]) {
+        for (const IPoint q : ring) flat = flat && orient(ring[0], ring[i], q) == 0;
+        break;
+      }
+    }
+    if (flat) ++count;
+  }
+  return count;
 }
 
 void appendInputEdges(const Paths& paths, int operand, const Grid& grid,
@@ -146,3 +163,9 @@ void appendLineEdges(const Paths& lines, const Grid& grid, std::vector<InputEdge
 }
 
 }  // namespace roiclip::detail
+
+namespace roiclip {
+std::size_t countDegeneratePaths(const Paths& paths, const Grid& grid) {
+  return detail::countDegenerate(paths, grid);
+}
+}  // namespace roiclip

@@ -7,6 +7,7 @@
 // who owns the ring. No point-in-polygon tests: linear after the sweep.
 #include <roiclip/error.hpp>
 
+#include "output.hpp"
 #include "pipeline.hpp"
 
 namespace roiclip::detail {
@@ -38,15 +39,14 @@ PolygonSet buildNesting(const Arrangement& arrangement, const Contours& contours
   PolygonSet result;
   result.polygons.reserve(outerCount);
 
-  const double inv = 1.0 / grid.scale;
+  const OutputFrame frame(grid);  // each coordinate the double nearest its exact value
   auto toPath = [&](const TracedRing& ring) {
     Path path;
     path.reserve(ring.vertices.size());
     // Traced rings have the filled side on their left (outer rings counter-clockwise in the raw
     // frame); roiclip's output orientation is the opposite, as cv::findContours returns them.
     for (auto it = ring.vertices.rbegin(); it != ring.vertices.rend(); ++it) {
-      const XPoint& p = arrangement.vertices[*it];
-      path.emplace_back(p.dx() * inv, p.dy() * inv);
+      path.push_back(frame.point(arrangement.vertices[*it]));
     }
     return path;
   };

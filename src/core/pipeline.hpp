@@ -55,6 +55,9 @@ void appendRingEdges(const Rings& rings, int operand, std::vector<InputEdge>& ou
 void appendLineEdges(const Paths& lines, const Grid& grid, std::vector<InputEdge>& out,
                      std::vector<std::size_t>& firstEdge);
 
+/// countDegeneratePaths() (input.cpp): paths whose snapped points all lie on one line.
+std::size_t countDegenerate(const Paths& paths, const Grid& grid);
+
 /// Which side of a piece is filled in the result.
 enum class Side : std::uint8_t { None = 0, Above = 1, Below = 2 };
 
@@ -66,6 +69,8 @@ struct BooleanSpec {
   ClipOp op = ClipOp::Intersection;
   FillRule subjectRule = FillRule::EvenOdd;
   FillRule clipRule = FillRule::EvenOdd;
+  /// Limits::maxCrossings: the sweep throws ResourceLimitError when it finds more crossings.
+  std::uint64_t maxCrossings = Limits::kUnlimited;
   /// Whether a point with these winding numbers is in the result. (Inline: the sweep asks this
   /// twice for every piece.)
   [[nodiscard]] bool inside(const Windings& w) const {
@@ -194,7 +199,9 @@ void preclipConvex(const Rings& rings, const std::vector<IPoint>& convexRing,
                    std::vector<ExactEdge>& out);
 
 /// Stage 4 (nesting.cpp): give each hole its outer ring and each outer ring the hole it lies
-/// in, and emit the polygons in image coordinates with roiclip's output orientation.
+/// in, and emit the polygons in image coordinates with roiclip's output orientation, every
+/// coordinate correctly rounded (output.hpp). `grid` is the call's resolved grid, as for every
+/// stage (resolveGrid()).
 PolygonSet buildNesting(const Arrangement& arrangement, const Contours& contours, const Grid& grid);
 
 /// Stage 5, on request (snap_round.cpp, roundTo()): snap rounding. The pixel (the half-open
@@ -221,12 +228,12 @@ SnappedOperand snapOperand(const Paths& paths, int operand, FillRule rule, const
 /// convex operand, else the general path. On the general path the subject's rings are freed
 /// once read.
 PolygonSet clipSnapped(ClipOp op, SnappedOperand& subject, const SnappedOperand& clip,
-                       const Grid& grid, Workspace& workspace);
+                       const Grid& grid, const Limits& limits, Workspace& workspace);
 
 /// clipLines() on a snapped region (clip_lines.cpp): `edges` holds the polylines' edges from
 /// appendLineEdges() (the region's are appended), `firstEdge` where each polyline starts.
 Paths clipLinesSnapped(std::vector<InputEdge>& edges, const std::vector<std::size_t>& firstEdge,
                        const SnappedOperand& region, LinePart part, const Grid& grid,
-                       Workspace& workspace);
+                       const Limits& limits, Workspace& workspace);
 
 }  // namespace roiclip::detail

@@ -6,60 +6,61 @@
 namespace roiclip {
 
 PolygonSet clip(ClipOp op, const PolygonSet& subject, const Paths& clipPaths, FillRule clipRule,
-                const Grid& grid) {
-  return clip(op, subject.toPaths(), clipPaths, kPolygonSetFillRule, clipRule, grid);
+                const Options& options) {
+  return clip(op, subject.toPaths(), clipPaths, kPolygonSetFillRule, clipRule, options);
 }
 
 PolygonSet clip(ClipOp op, const Paths& subject, const PolygonSet& clipSet, FillRule subjectRule,
-                const Grid& grid) {
-  return clip(op, subject, clipSet.toPaths(), subjectRule, kPolygonSetFillRule, grid);
+                const Options& options) {
+  return clip(op, subject, clipSet.toPaths(), subjectRule, kPolygonSetFillRule, options);
 }
 
-PolygonSet clip(ClipOp op, const PolygonSet& subject, const PolygonSet& clipSet, const Grid& grid) {
+PolygonSet clip(ClipOp op, const PolygonSet& subject, const PolygonSet& clipSet,
+                const Options& options) {
   return clip(op, subject.toPaths(), clipSet.toPaths(), kPolygonSetFillRule, kPolygonSetFillRule,
-              grid);
+              options);
 }
 
-PolygonSet intersect(const PolygonSet& s, const Paths& c, FillRule rule, const Grid& grid) {
-  return clip(ClipOp::Intersection, s, c, rule, grid);
+PolygonSet intersect(const PolygonSet& s, const Paths& c, FillRule rule, const Options& options) {
+  return clip(ClipOp::Intersection, s, c, rule, options);
 }
-PolygonSet intersect(const Paths& s, const PolygonSet& c, FillRule rule, const Grid& grid) {
-  return clip(ClipOp::Intersection, s, c, rule, grid);
+PolygonSet intersect(const Paths& s, const PolygonSet& c, FillRule rule, const Options& options) {
+  return clip(ClipOp::Intersection, s, c, rule, options);
 }
-PolygonSet intersect(const PolygonSet& s, const PolygonSet& c, const Grid& grid) {
-  return clip(ClipOp::Intersection, s, c, grid);
-}
-
-PolygonSet unite(const PolygonSet& s, const Paths& c, FillRule rule, const Grid& grid) {
-  return clip(ClipOp::Union, s, c, rule, grid);
-}
-PolygonSet unite(const Paths& s, const PolygonSet& c, FillRule rule, const Grid& grid) {
-  return clip(ClipOp::Union, s, c, rule, grid);
-}
-PolygonSet unite(const PolygonSet& s, const PolygonSet& c, const Grid& grid) {
-  return clip(ClipOp::Union, s, c, grid);
+PolygonSet intersect(const PolygonSet& s, const PolygonSet& c, const Options& options) {
+  return clip(ClipOp::Intersection, s, c, options);
 }
 
-PolygonSet subtract(const PolygonSet& s, const Paths& c, FillRule rule, const Grid& grid) {
-  return clip(ClipOp::Difference, s, c, rule, grid);
+PolygonSet unite(const PolygonSet& s, const Paths& c, FillRule rule, const Options& options) {
+  return clip(ClipOp::Union, s, c, rule, options);
 }
-PolygonSet subtract(const Paths& s, const PolygonSet& c, FillRule rule, const Grid& grid) {
-  return clip(ClipOp::Difference, s, c, rule, grid);
+PolygonSet unite(const Paths& s, const PolygonSet& c, FillRule rule, const Options& options) {
+  return clip(ClipOp::Union, s, c, rule, options);
 }
-PolygonSet subtract(const PolygonSet& s, const PolygonSet& c, const Grid& grid) {
-  return clip(ClipOp::Difference, s, c, grid);
+PolygonSet unite(const PolygonSet& s, const PolygonSet& c, const Options& options) {
+  return clip(ClipOp::Union, s, c, options);
+}
+
+PolygonSet subtract(const PolygonSet& s, const Paths& c, FillRule rule, const Options& options) {
+  return clip(ClipOp::Difference, s, c, rule, options);
+}
+PolygonSet subtract(const Paths& s, const PolygonSet& c, FillRule rule, const Options& options) {
+  return clip(ClipOp::Difference, s, c, rule, options);
+}
+PolygonSet subtract(const PolygonSet& s, const PolygonSet& c, const Options& options) {
+  return clip(ClipOp::Difference, s, c, options);
 }
 
 PolygonSet symmetricDifference(const PolygonSet& s, const Paths& c, FillRule rule,
-                               const Grid& grid) {
-  return clip(ClipOp::Xor, s, c, rule, grid);
+                               const Options& options) {
+  return clip(ClipOp::Xor, s, c, rule, options);
 }
 PolygonSet symmetricDifference(const Paths& s, const PolygonSet& c, FillRule rule,
-                               const Grid& grid) {
-  return clip(ClipOp::Xor, s, c, rule, grid);
+                               const Options& options) {
+  return clip(ClipOp::Xor, s, c, rule, options);
 }
-PolygonSet symmetricDifference(const PolygonSet& s, const PolygonSet& c, const Grid& grid) {
-  return clip(ClipOp::Xor, s, c, grid);
+PolygonSet symmetricDifference(const PolygonSet& s, const PolygonSet& c, const Options& options) {
+  return clip(ClipOp::Xor, s, c, options);
 }
 
 }  // namespace roiclip

@@ -406,10 +406,17 @@ class Sweep {
     queueCrossing(x, a);
   }
 
-  // The one place a new crossing becomes an event.
-  void queueCrossing(const XPoint& x, int piece) { push({x, -1, piece}); }
+  // The one place a new crossing becomes an event, after the work budget
+  // (Limits::maxCrossings) is checked, before the event takes memory.
+  void queueCrossing(const XPoint& x, int piece) {
+    if (++crossings_ > spec_.maxCrossings) {
+      throw ResourceLimitError("maxCrossings", spec_.maxCrossings, "crossings");
+    }
+    push({x, -1, piece});
+  }
 
   const BooleanSpec& spec_;
+  std::uint64_t crossings_ = 0;  // crossings found so far (Limits::maxCrossings)
   int vertex_ = -1;
   std::vector<SweepPiece>& pieces_;
   std::vector<SweepStart>& starts_;

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <sstream>
 #include <utility>
 
@@ -53,14 +54,20 @@ std::size_t ringCount(const Feature& feature) {
 
 // The result of an operation on `input` as a feature: `input`'s id and properties, or the
 // summary properties of toFeature() when it has none.
-Feature withIdentity(const PolygonSet& set, const Feature& input) {
-  Feature out = toFeature(set);
+Feature withIdentity(const PolygonSet& set, const Feature& input, std::size_t ignoredRings) {
+  Feature out = toFeature(set, ignoredRings);
+  out.ignoredRings = ignoredRings;
   out.id = input.id;
   if (!input.propertiesJson.empty()) {
     out.propertiesJson = input.propertiesJson;
     out.properties = input.properties;
   }
   return out;
+}
+
+// The feature's rings that the call on `grid` (the call's grid, resolved) ignores.
+std::size_t ignored(const Paths& rings, const Options& options, const Paths& other = {}) {
+  return countDegeneratePaths(rings, resolveGrid(options.grid, rings, other));
 }
 
 // "1/256 px" (or "1/0.5 px" for a fractional scale).
@@ -105,7 +112,7 @@ Feature dissolve(const std::vector<Feature>& features) {
   return out;
 }
 
-Feature toFeature(const PolygonSet& set) {
+Feature toFeature(const PolygonSet& set, std::size_t ignoredRings) {
   Feature out;
   out.polygons.reserve(set.polygons.size());
   for (const Polygon& polygon : set.polygons) {
@@ -115,8 +122,9 @@ Feature toFeature(const PolygonSet& set) {
     rings.insert(rings.end(), polygon.holes.begin(), polygon.holes.end());
     out.polygons.push_back(std::move(rings));
   }
-  out.propertiesJson =
-      nlohmann::ordered_json{{"area", set.area()}, {"rings", set.ringCount()}}.dump();
+  nlohmann::ordered_json properties{{"area", set.area()}, {"rings", set.ringCount()}};
+  if (ignoredRings > 0) properties["ignoredRings"] = ignoredRings;
+  out.propertiesJson = properties.dump();
   return out;
 }
 
@@ -138,13 +146,16 @@ InvalidInputError nameSource(const InvalidInputError& e, std::initializer_list<S
 }
 
 std::vector<Feature> simplifyFeatures(const std::vector<Feature>& features,
-                                      const std::string& source, FillRule rule, const Grid& grid) {
+                                      const std::string& source, FillRule rule,
+                                      const Options& options) {
   std::vector<Feature> out;
   out.reserve(features.size());
   std::size_t offset = 0;
   for (const Feature& feature : features) {
     try {
-      out.push_back(withIdentity(simplify(allRings({feature}), rule, grid), feature));
+      const Paths rings = allRings({feature});
+      const PolygonSet set = simplify(rings, rule, options);
+      out.push_back(withIdentity(set, feature, ignored(rings, options)));
     } catch (const InvalidInputError& e) {
       throw nameSource(e, {{Operand::Subject, source}}, offset);
     }
@@ -156,7 +167,8 @@ std::vector<Feature> simplifyFeatures(const std::vector<Feature>& features,
 std::vector<Feature> clipFeatures(ClipOp op, const std::vector<Feature>& subject,
                                   const std::string& subjectSource,
                                   const std::vector<Feature>& clip, const std::string& clipSource,
-                                  FillRule subjectRule, FillRule clipRule, const Grid& grid) {
+                                  FillRule subjectRule, FillRule clipRule,
+                                  const Options& options) {
   // The union of the clip features: each one's region under clipRule (the union of nothing with
   // it), its rings then read together under NonZero. One feature gives the region its rings make
   // under clipRule, as when every ring is clipped against at once.
@@ -165,7 +177,7 @@ std::vector<Feature> clipFeatures(ClipOp op, const std::vector<Feature>& subject
   for (const Feature& feature : clip) {
     try {
       const PolygonSet set =
-          roiclip::clip(ClipOp::Union, {}, allRings({feature}), FillRule::NonZero, clipRule, grid);
+          roiclip::clip(ClipOp::Union, {}, allRings({feature}), FillRule::NonZero, clipRule, options);
       const Paths rings = set.toPaths();
       region.insert(region.end(), rings.begin(), rings.end());
     } catch (const InvalidInputError& e) {
@@ -178,9 +190,10 @@ std::vector<Feature> clipFeatures(ClipOp op, const std::vector<Feature>& subject
   offset = 0;
   for (const Feature& feature : subject) {
     try {
+      const Paths rings = allRings({feature});
       const PolygonSet set =
-          roiclip::clip(op, allRings({feature}), region, subjectRule, FillRule::NonZero, grid);
-      out.push_back(withIdentity(set, feature));
+          roiclip::clip(op, rings, region, subjectRule, FillRule::NonZero, options);
+      out.push_back(withIdentity(set, feature, ignored(rings, options, region)));
     } catch (const InvalidInputError& e) {
       throw nameSource(e, {{Operand::Subject, subjectSource}, {Operand::Clip, clipSource}}, offset);
     }
@@ -191,19 +204,22 @@ std::vector<Feature> clipFeatures(ClipOp op, const std::vector<Feature>& subject
 
 SnapShift measureSnapShift(const Paths& paths, const Grid& grid) {
   SnapShift shift;
-  if (!(grid.scale > 0.0) || !std::isfinite(grid.scale)) return shift;  // the core says why
+  if (grid.isFitted() || !(grid.scale > 0.0) || !std::isfinite(grid.scale)) return shift;
+  const double origins[2] = {grid.origin.x, grid.origin.y};
   for (std::size_t p = 0; p < paths.size(); ++p) {
     for (std::size_t v = 0; v < paths[p].size(); ++v) {
       ++shift.vertices;
       bool moved = false;
-      for (const double c : {paths[p][v].x, paths[p][v].y}) {
-        // Distance to the nearest grid unit: the same whichever way the core breaks a tie.
-        const double u = c * grid.scale;
-        const double units = std::fabs(u - std::nearbyint(u));
-        if (!std::isfinite(units)) continue;
-        moved = moved || units > kSnapWarningFraction;
-        if (units / grid.scale > shift.largest) {
-          shift.largest = units / grid.scale;
+      const double coordinates[2] = {paths[p][v].x, paths[p][v].y};
+      for (int axis = 0; axis < 2; ++axis) {
+        // The core's own snapping (Grid::toUnits()); NaN and out-of-range are the core's to say.
+        const std::optional<std::int64_t> units = grid.toUnits(coordinates[axis], origins[axis]);
+        if (!units) continue;
+        const double move =
+            std::fabs(coordinates[axis] - grid.toCoordinate(*units, origins[axis]));
+        moved = moved || move * grid.scale > kSnapWarningFraction;
+        if (move > shift.largest) {
+          shift.largest = move;
           shift.path = p;
           shift.vertex = v;
         }
@@ -223,7 +239,7 @@ std::vector<Warning> snapWarnings(const Paths& paths, const std::string& source,
                        std::to_string(shift.moved) + " of " + std::to_string(shift.vertices) +
                        " vertices by more than 1/4 grid step (up to " + largest + " px, path " +
                        std::to_string(shift.path) + ", vertex " + std::to_string(shift.vertex) +
-                       "); a larger grid scale (--grid-scale) keeps more digits"}};
+                       "); a larger --grid SCALE, or --grid auto (the default), keeps more digits"}};
 }
 
 std::string sourceName(const std::string& file) { return file == "-" ? kStdin : file; }

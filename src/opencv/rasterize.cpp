@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -13,19 +14,16 @@ namespace {
 
 using i128 = __int128;
 
-std::int64_t snap(double v, double scale, const char* axis, std::size_t path, std::size_t vertex) {
-  if (!std::isfinite(v)) {
-    throw InvalidInputError("rasterize: path " + std::to_string(path) + ", vertex " +
-                            std::to_string(vertex) + ": " + axis + " is not a finite number");
-  }
-  // The same snapping as the core (nearest grid unit, ties to even).
-  const double units = std::nearbyint(v * scale);
-  if (!(std::fabs(units) <= double(Grid::kMaxUnits))) {
-    throw InvalidInputError("rasterize: path " + std::to_string(path) + ", vertex " +
-                            std::to_string(vertex) + ": " + axis + " = " + std::to_string(v) +
-                            " is outside the supported range");
-  }
-  return std::int64_t(units);
+// The core's snapping rule (Grid::toUnits()); the grid's origin is (0, 0).
+std::int64_t snap(double v, const Grid& grid, const char* axis, std::size_t path,
+                  std::size_t vertex) {
+  const std::optional<std::int64_t> units = grid.toUnits(v, 0.0);
+  if (units) return *units;
+  const std::string where =
+      "rasterize: path " + std::to_string(path) + ", vertex " + std::to_string(vertex) + ": ";
+  if (!std::isfinite(v)) throw InvalidInputError(where + axis + " is not a finite number");
+  throw InvalidInputError(where + axis + " = " + std::to_string(v) +
+                          " is outside the supported range");
 }
 
 // Smallest integer >= n / d for d > 0.
@@ -43,7 +41,11 @@ struct Crossing {
 
 }  // namespace
 
-cv::Mat rasterize(const Paths& paths, FillRule rule, cv::Size size, const Grid& grid) {
+cv::Mat rasterize(const Paths& paths, FillRule rule, cv::Size size, const Grid& requested) {
+  const Grid grid = requested.isFitted() ? kRasterGrid : requested;
+  if (grid.origin != Point(0.0, 0.0)) {
+    throw InvalidInputError("rasterize: the grid's origin must be (0, 0)");
+  }
   if (!(grid.scale >= 1.0 && grid.scale <= 65536.0 && grid.scale == std::floor(grid.scale))) {
     throw InvalidInputError("rasterize: grid scale must be an integer in 1..65536, got " +
                             std::to_string(grid.scale));
@@ -60,8 +62,7 @@ cv::Mat rasterize(const Paths& paths, FillRule rule, cv::Size size, const Grid& 
   for (std::size_t p = 0; p < paths.size(); ++p) {
     ring.clear();
     for (std::size_t v = 0; v < paths[p].size(); ++v) {
-      ring.emplace_back(snap(paths[p][v].x, grid.scale, "x", p, v),
-                        snap(paths[p][v].y, grid.scale, "y", p, v));
+      ring.emplace_back(snap(paths[p][v].x, grid, "x", p, v), snap(paths[p][v].y, grid, "y", p, v));
     }
     for (std::size_t v = 0; v < ring.size(); ++v) {
       auto [x0, y0] = ring[v];

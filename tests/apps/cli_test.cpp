@@ -58,7 +58,12 @@ TEST_F(Cli, HelpPrintsTheExitCodeTable) {
   const std::string geometry = exitCodesHelp(ExitCodesOf::Geometry);
   EXPECT_EQ(geometry.rfind("Exit codes:\n  0  success\n  1  command-line usage error\n", 0), 0u)
       << geometry;
-  EXPECT_NE(geometry.find("\n     fewer than 3 distinct points"), std::string::npos) << geometry;
+  EXPECT_NE(geometry.find("\n     --strict a ring with fewer than 3 distinct points"),
+            std::string::npos)
+      << geometry;
+  EXPECT_NE(geometry.find("\n  6  the input needs more work than --max-crossings allows"),
+            std::string::npos)
+      << geometry;
   EXPECT_EQ(geometry.find("130"), std::string::npos) << "run's codes are not the geometry's";
   for (const char* args : {"--help", "simplify --help", "clip --help", "clip-lines --help"}) {
     EXPECT_NE(run(args).out.find(geometry), std::string::npos) << args;
@@ -141,14 +146,16 @@ TEST_F(Cli, BadInputSimplify) {
   };
   for (const auto& c : cases) {
     SCOPED_TRACE(c.file);
-    expectBadInput(run("simplify '" + kData + c.file + "'"), c.file, c.problem);
+    // --strict refuses degenerate rings, and out_of_range.json is beyond a fixed 1/256 px grid
+    // (the default fitted grid and lenient reading take both: see DegenerateRingsAreCounted).
+    expectBadInput(run("simplify --strict --grid 256 '" + kData + c.file + "'"), c.file, c.problem);
   }
 }
 
 TEST_F(Cli, BadInputClipNamesTheBadOperand) {
   const std::string good = "'" + kData + "square.geojson'";
-  expectBadInput(run("clip " + good + " '" + kData + "out_of_range.json'"), "out_of_range.json",
-                 "outside the supported range");
+  expectBadInput(run("clip --grid 256 " + good + " '" + kData + "out_of_range.json'"),
+                 "out_of_range.json", "outside the supported range");
   expectBadInput(run("clip '" + kData + "string_coordinate.json' " + good),
                  "string_coordinate.json", "not a number");
   const CliRun r = run("clip " + good + " '" + kData + "bad_syntax.json'");
@@ -163,12 +170,14 @@ TEST_F(Cli, BadInputFileNamedLikeAnOperand) {
   fs::copy_file(kData + "out_of_range.json", clipNamed);
   fs::copy_file(kData + "square.geojson", subjectNamed);
   const std::string at = ": path 1, vertex 1: x = 5000000.000000 is outside";
-  const CliRun asSubject = run("clip '" + clipNamed.string() + "' '" + subjectNamed.string() + "'");
+  const CliRun asSubject =
+      run("clip --grid 256 '" + clipNamed.string() + "' '" + subjectNamed.string() + "'");
   expectBadInput(asSubject, clipNamed.string() + at, "supported range");
-  const CliRun asClip = run("clip '" + subjectNamed.string() + "' '" + clipNamed.string() + "'");
+  const CliRun asClip =
+      run("clip --grid 256 '" + subjectNamed.string() + "' '" + clipNamed.string() + "'");
   expectBadInput(asClip, clipNamed.string() + at, "supported range");
   const CliRun asLines =
-      run("clip-lines '" + clipNamed.string() + "' '" + subjectNamed.string() + "'");
+      run("clip-lines --grid 256 '" + clipNamed.string() + "' '" + subjectNamed.string() + "'");
   expectBadInput(asLines, clipNamed.string() + at, "supported range");
   const CliRun bad = run("clip '" + subjectNamed.string() + "' '" + kData + "bad_syntax.json'");
   EXPECT_EQ(bad.err.find("subject 2.json"), std::string::npos) << bad.err;
@@ -176,7 +185,8 @@ TEST_F(Cli, BadInputFileNamedLikeAnOperand) {
 
 TEST_F(Cli, BadInputWritesNoOutputFile) {
   const fs::path out = dir_ / "result.geojson";
-  const CliRun r = run("simplify '" + kData + "degenerate_ring.geojson' -o '" + out.string() + "'");
+  const CliRun r =
+      run("simplify --strict '" + kData + "degenerate_ring.geojson' -o '" + out.string() + "'");
   expectBadInput(r, "degenerate_ring.geojson", "fewer than 3 distinct points");
   EXPECT_FALSE(fs::exists(out));
   // An existing output is left as it was, and no temporary remains.
@@ -188,6 +198,62 @@ TEST_F(Cli, BadInputWritesNoOutputFile) {
   std::size_t entries = 0;
   for ([[maybe_unused]] const auto& e : fs::directory_iterator(dir_)) ++entries;
   EXPECT_EQ(entries, 1u);
+}
+
+// Degenerate rings are ignored and counted; --strict refuses them with the reader's message.
+TEST_F(Cli, DegenerateRingsAreCounted) {
+  const std::string file = "'" + kData + "degenerate_ring.geojson'";
+  const CliRun r = run("simplify " + file);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(properties(r.out).at("ignoredRings"), 1);
+  EXPECT_NEAR(area(r), 50.0, 0);
+  EXPECT_NE(r.err.find("degenerate_ring.geojson: ignored 1 ring with fewer than 3 distinct "
+                       "points or no area"),
+            std::string::npos)
+      << r.err;
+  // WKT, and clip: the same count.
+  const fs::path wkt = dir_ / "degenerate.wkt";
+  std::ofstream(wkt) << "MULTIPOLYGON (((0 0, 10 0, 10 10, 0 0)), ((3 3, 4 4, 3 3)), "
+                        "((5 5, 6 6, 7 7, 5 5)))";
+  const CliRun w = run("simplify '" + wkt.string() + "'");
+  ASSERT_EQ(w.exitCode, 0) << w.err;
+  EXPECT_EQ(properties(w.out).at("ignoredRings"), 2);
+  const CliRun c = run("clip " + file + " '" + kData + "square.geojson'");
+  ASSERT_EQ(c.exitCode, 0) << c.err;
+  EXPECT_EQ(properties(c.out).at("ignoredRings"), 1);
+  // A clean input has no such property.
+  EXPECT_FALSE(
+      properties(run("simplify '" + kData + "square.geojson'").out).contains("ignoredRings"));
+  expectBadInput(run("simplify --strict " + file), "degenerate_ring.geojson",
+                 "polygon 1, ring 0 (path 1): ring has fewer than 3 distinct points");
+  expectBadInput(run("simplify --strict '" + wkt.string() + "'"), "degenerate.wkt",
+                 "ring has fewer than 3 distinct points");
+}
+
+// The work budget: exit code 6, one line naming the limit and the flag, no output.
+TEST_F(Cli, MaxCrossingsExitsWithCode6) {
+  const std::string args = "'" + kData + "bowtie.json' '" + kData + "roi.geojson'";
+  const CliRun r = run("clip --max-crossings 0 " + args);
+  EXPECT_EQ(r.exitCode, 6);
+  EXPECT_TRUE(r.out.empty()) << r.out;
+  EXPECT_EQ(r.err,
+            "roiclip: error: more than 0 crossings (the limit maxCrossings); raise it with "
+            "--max-crossings\n");
+  EXPECT_EQ(run("clip --max-crossings 1 " + args).exitCode, 0);
+  EXPECT_EQ(run("clip " + args).exitCode, 0);  // the default: 25,000,000
+}
+
+// Map coordinates as given: UTM northings of 5e6 with 0.1 mm detail.
+TEST_F(Cli, MapCoordinatesAreTaken) {
+  const fs::path utm = dir_ / "utm.geojson";
+  std::ofstream(utm) << R"({"type":"Polygon","coordinates":[[[512345.1234,5087776.5678],
+      [512445.1234,5087776.5678],[512445.1234,5087876.5678],[512345.1234,5087876.5678],
+      [512345.1234,5087776.5678]]]})";
+  const CliRun r = run("simplify '" + utm.string() + "'");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_TRUE(r.err.empty()) << r.err;
+  EXPECT_NEAR(area(r), 10000.0, 1e-5);
+  EXPECT_EQ(run("simplify --grid 256 '" + utm.string() + "'").exitCode, 2);
 }
 
 TEST_F(Cli, UsageErrors) {
@@ -203,8 +269,13 @@ TEST_F(Cli, UsageErrors) {
 
 TEST_F(Cli, GridScale) {
   const std::string far = "'" + kData + "out_of_range.json'";
-  // x = 5,000,000 px is outside the default grid (256 units/px) but fits at 64 units/px.
-  EXPECT_EQ(run("simplify " + far).exitCode, 2);
+  // x = 5,000,000 px is outside a fixed 1/256 px grid but fits at 64 units/px (--grid-scale is
+  // the old spelling of --grid SCALE), and on the fitted grid (--grid auto, the default).
+  EXPECT_EQ(run("simplify --grid 256 " + far).exitCode, 2);
+  const CliRun fitted = run("simplify " + far);
+  ASSERT_EQ(fitted.exitCode, 0) << fitted.err;
+  EXPECT_NEAR(area(fitted), 25000000.0 - 50.0, 1e-3);
+  EXPECT_EQ(run("simplify --grid auto " + far).out, fitted.out);
   const CliRun coarse = run("simplify --grid-scale 64 " + far);
   ASSERT_EQ(coarse.exitCode, 0) << coarse.err;
   // Even-odd: the small triangle (area 50) lies inside the big one (area 2.5e7) but for a sliver
@@ -214,10 +285,12 @@ TEST_F(Cli, GridScale) {
   const fs::path tiny = dir_ / "tiny.json";
   std::ofstream(tiny) << R"({"paths": [[[0, 0], [0.0009765625, 0], [0.0009765625, 0.0009765625],
                                          [0, 0.0009765625]]]})";
-  EXPECT_DOUBLE_EQ(area(run("simplify '" + tiny.string() + "'")), 0.0);
+  EXPECT_DOUBLE_EQ(area(run("simplify --grid 256 '" + tiny.string() + "'")), 0.0);
+  EXPECT_DOUBLE_EQ(area(run("simplify '" + tiny.string() + "'")), 0.0009765625 * 0.0009765625);
   EXPECT_DOUBLE_EQ(area(run("simplify --grid-scale 1024 '" + tiny.string() + "'")),
                    0.0009765625 * 0.0009765625);
   EXPECT_EQ(run("clip --grid-scale -1 " + far + " " + far).exitCode, 1);
+  EXPECT_EQ(run("clip --grid fine " + far + " " + far).exitCode, 1);
 }
 
 TEST_F(Cli, UnwritableOutput) {
@@ -310,8 +383,9 @@ TEST_F(Cli, ClipLinesBadInput) {
   };
   for (const auto& c : cases) {
     SCOPED_TRACE(std::string(c.lines) + " " + c.region);
-    expectBadInput(run("clip-lines '" + kData + c.lines + "' '" + kData + c.region + "'"), c.file,
-                   c.problem);
+    expectBadInput(
+        run("clip-lines --grid 256 '" + kData + c.lines + "' '" + kData + c.region + "'"), c.file,
+        c.problem);
   }
 }
 
@@ -513,7 +587,9 @@ TEST_F(Cli, OutputDirectoryIsADirectory) {
 
 TEST_F(Cli, SnappingWarning) {
   // 0.123456789 px is 31.605 grid units at 1/256 px: snapping moves it by 0.395 of a step.
-  const CliRun r = run("simplify '" + kData + "gis_square.geojson'");
+  // Only on a fixed grid: the fitted default moves nothing by a visible amount.
+  EXPECT_TRUE(run("simplify '" + kData + "gis_square.geojson'").err.empty());
+  const CliRun r = run("simplify --grid 256 '" + kData + "gis_square.geojson'");
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_NE(r.err.find("roiclip: warning: " + kData +
                        "gis_square.geojson: snapping to the 1/256 px grid moved 2 of 4 vertices "
@@ -524,13 +600,14 @@ TEST_F(Cli, SnappingWarning) {
   // 3/2048 px moves by 3/8 of a 1/256 px step (a warning); on a 1/2048 px grid it does not move.
   const fs::path fine = dir_ / "fine.json";
   std::ofstream(fine) << R"({"paths": [[[0.00146484375, 0], [5, 0], [5, 5]]]})";
-  EXPECT_NE(run("simplify '" + fine.string() + "'").err.find("moved 1 of 3 vertices"),
+  EXPECT_NE(run("simplify --grid 256 '" + fine.string() + "'").err.find("moved 1 of 3 vertices"),
             std::string::npos);
   const CliRun finer = run("simplify --grid-scale 2048 '" + fine.string() + "'");
   EXPECT_EQ(finer.exitCode, 0) << finer.err;
   EXPECT_TRUE(finer.err.empty()) << finer.err;
   // Only the operand whose vertices move warns.
-  const CliRun clip = run("clip '" + kData + "square.geojson' '" + kData + "gis_square.geojson'");
+  const CliRun clip =
+      run("clip --grid 256 '" + kData + "square.geojson' '" + kData + "gis_square.geojson'");
   EXPECT_EQ(clip.exitCode, 0) << clip.err;
   EXPECT_NE(clip.err.find("gis_square.geojson: snapping"), std::string::npos) << clip.err;
   EXPECT_EQ(clip.err.find("snapping"), clip.err.rfind("snapping")) << clip.err;

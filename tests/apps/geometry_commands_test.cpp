@@ -16,6 +16,8 @@ namespace roiclip::app {
 namespace {
 
 const std::string kData = std::string(ROICLIP_TEST_DATA) + "/io/";
+// out_of_range.json's x = 5e6 is beyond a fixed 1/256 px grid (the fitted default takes it).
+const Grid kPixelGrid = Grid::fixed(256);
 const std::string kOutOfRange =
     "x = 5000000.000000 is outside the supported range +-4194304.000000";
 
@@ -35,7 +37,7 @@ TEST(GeometryCommands, CoordinateOutOfRangeNamesFileAndPath) {
   const Paths paths = io::readPaths(file);
   const Paths square = io::readPaths(kData + "square.geojson");
   const std::string expected = file + ": path 1, vertex 1: " + kOutOfRange;
-  const auto e = thrown([&] { simplifyInput(paths, file, FillRule::NonZero); });
+  const auto e = thrown([&] { simplifyInput(paths, file, FillRule::NonZero, kPixelGrid); });
   ASSERT_TRUE(e);
   EXPECT_EQ(e->what(), expected);
   EXPECT_EQ(e->location().source, file);
@@ -45,13 +47,13 @@ TEST(GeometryCommands, CoordinateOutOfRangeNamesFileAndPath) {
   EXPECT_EQ(e->location().axis, Axis::X);
   const auto asClip = thrown([&] {
     clipInputs(ClipOp::Intersection, square, "square.geojson", paths, file, FillRule::EvenOdd,
-               FillRule::EvenOdd);
+               FillRule::EvenOdd, kPixelGrid);
   });
   ASSERT_TRUE(asClip);
   EXPECT_EQ(asClip->what(), expected);
   const auto asSubject = thrown([&] {
     clipInputs(ClipOp::Union, paths, file, square, "square.geojson", FillRule::EvenOdd,
-               FillRule::EvenOdd);
+               FillRule::EvenOdd, kPixelGrid);
   });
   ASSERT_TRUE(asSubject);
   EXPECT_EQ(asSubject->what(), expected);
@@ -74,13 +76,17 @@ TEST(ClipLinesInputs, CoreErrorsNameTheSource) {
   const Paths lines = io::readLines(kData + "lines_cross.geojson");
   const Paths square = io::readPaths(kData + "square.geojson");
   const std::string expected = far + ": path 1, vertex 1: " + kOutOfRange;
-  const auto line =
-      thrown([&] { clipLinesInputs(farLines, far, square, "square.geojson", FillRule::EvenOdd); });
+  const auto line = thrown([&] {
+    clipLinesInputs(farLines, far, square, "square.geojson", FillRule::EvenOdd, LinePart::Inside,
+                    kPixelGrid);
+  });
   ASSERT_TRUE(line);
   EXPECT_EQ(line->what(), expected);
   EXPECT_EQ(line->location().operand, Operand::Line);
-  const auto region = thrown(
-      [&] { clipLinesInputs(lines, "lines.geojson", io::readPaths(far), far, FillRule::NonZero); });
+  const auto region = thrown([&] {
+    clipLinesInputs(lines, "lines.geojson", io::readPaths(far), far, FillRule::NonZero,
+                    LinePart::Inside, kPixelGrid);
+  });
   ASSERT_TRUE(region);
   EXPECT_EQ(region->what(), expected);
   EXPECT_EQ(region->location().operand, Operand::Clip);
@@ -95,7 +101,9 @@ TEST(NameSource, InputNamedLikeAnOperandIsNotMistakenForIt) {
   const std::string degenerate = R"({"paths": [[[0, 0], [1, 0], [0, 1]], [[0, 0], [1, 1]]]})";
   for (const std::string name : {"clip 1.json", "subject 1.json", "line 1.json"}) {
     SCOPED_TRACE(name);
-    const auto read = thrown([&] { io::parsePaths(degenerate, name); });
+    io::ReadOptions strict;  // --strict: the reader refuses the degenerate ring
+    strict.allowDegenerateRings = false;
+    const auto read = thrown([&] { io::parsePaths(degenerate, name, strict); });
     ASSERT_TRUE(read);
     EXPECT_EQ(read->location().source, name);
     EXPECT_EQ(read->location().operand, Operand::None);
@@ -114,22 +122,26 @@ TEST(NameSource, InputNamedLikeAnOperandIsNotMistakenForIt) {
   const std::string at = ": path 1, vertex 1: " + kOutOfRange;
   const auto asSubject = thrown([&] {
     clipInputs(ClipOp::Union, far, clipNamed, square, subjectNamed, FillRule::EvenOdd,
-               FillRule::EvenOdd);
+               FillRule::EvenOdd, kPixelGrid);
   });
   ASSERT_TRUE(asSubject);
   EXPECT_EQ(asSubject->what(), clipNamed + at);
   const auto asClip = thrown([&] {
     clipInputs(ClipOp::Union, square, clipNamed, far, subjectNamed, FillRule::EvenOdd,
-               FillRule::EvenOdd);
+               FillRule::EvenOdd, kPixelGrid);
   });
   ASSERT_TRUE(asClip);
   EXPECT_EQ(asClip->what(), subjectNamed + at);
-  const auto asLines =
-      thrown([&] { clipLinesInputs(far, clipNamed, square, subjectNamed, FillRule::EvenOdd); });
+  const auto asLines = thrown([&] {
+    clipLinesInputs(far, clipNamed, square, subjectNamed, FillRule::EvenOdd, LinePart::Inside,
+                    kPixelGrid);
+  });
   ASSERT_TRUE(asLines);
   EXPECT_EQ(asLines->what(), clipNamed + at);
-  const auto asRegion =
-      thrown([&] { clipLinesInputs(square, clipNamed, far, subjectNamed, FillRule::EvenOdd); });
+  const auto asRegion = thrown([&] {
+    clipLinesInputs(square, clipNamed, far, subjectNamed, FillRule::EvenOdd, LinePart::Inside,
+                    kPixelGrid);
+  });
   ASSERT_TRUE(asRegion);
   EXPECT_EQ(asRegion->what(), subjectNamed + at);
 }
@@ -140,12 +152,12 @@ TEST(NameSource, AnErrorNamingNoOperandNamesEverySource) {
       std::string(nameSource(e, {{Operand::Subject, "a.json"}, {Operand::Clip, "b.json"}}).what()),
       "a.json, b.json: grid scale must be positive and finite, got 0.000000");
   const auto core = thrown([] {
-    simplifyInput({{{0, 0}, {1, 0}, {1, 1}}}, "a.json", FillRule::EvenOdd, Grid{0.0});
+    simplifyInput({{{0, 0}, {1, 0}, {1, 1}}}, "a.json", FillRule::EvenOdd, Grid{-1.0});
   });
   ASSERT_TRUE(core);
   EXPECT_EQ(core->location().operand, Operand::None);
   EXPECT_EQ(std::string(core->what()),
-            "a.json: grid scale must be positive and finite, got 0.000000");
+            "a.json: grid scale must be positive and finite, got -1.000000");
 }
 
 }  // namespace

@@ -44,11 +44,12 @@ TEST(Limits, DegenerateOperandsOfClipContributeNothing) {
 }
 
 // stages/input_test.cpp covers NaN, +inf and 1e7 in a subject path and the range edge on one side.
+// A fixed 1/256 px grid: the fitted default has no range to leave.
 TEST(Limits, InvalidClipOperandIsRejectedWithItsLocation) {
-  const double edge = 4194304.0;  // 2^30 grid units at the default scale
+  const double edge = 4194304.0;  // 2^30 grid units at scale 256
   const auto message = [](const Paths& subject, const Paths& region) -> std::string {
     try {
-      intersect(subject, region);
+      intersect(subject, region, FillRule::EvenOdd, Grid::fixed(256));
     } catch (const InvalidInputError& e) {
       return e.what();
     }
@@ -139,6 +140,41 @@ TEST(Limits, CombsCrossingThemselvesManyTimes) {
     return (w[0] % 2 != 0) && (w[1] % 2 != 0);
   });
   EXPECT_NEAR(in.area(), slab, 1e-9 * slab);
+}
+
+// The work budget (Limits::maxCrossings): a typed error naming the limit, raised while the sweep
+// finds crossings, on the general and the convex (pre-clipped) path alike; nothing is returned.
+TEST(Limits, MaxCrossingsStopsTheSweepWithResourceLimitError) {
+  // Two combs of 10 teeth each: 100 or more crossings.
+  Path a, b;
+  for (int i = 0; i < 10; ++i) {
+    a.push_back({2.0 * i, 0});
+    a.push_back({2.0 * i + 1, 30});
+    b.push_back({0, 2.0 * i + 0.5});
+    b.push_back({30, 2.0 * i + 1.5});
+  }
+  a.push_back({20, -5});
+  b.push_back({-5, 20});
+  const Options tight(Grid::fitted(), Limits{10});
+  try {
+    intersect({a}, {b}, FillRule::EvenOdd, tight);
+    FAIL() << "no ResourceLimitError";
+  } catch (const ResourceLimitError& e) {
+    EXPECT_EQ(e.limit(), "maxCrossings");
+    EXPECT_EQ(e.value(), 10u);
+    EXPECT_STREQ(e.what(), "more than 10 crossings (the limit maxCrossings)");
+  }
+  EXPECT_THROW(simplify({a, b}, FillRule::NonZero, tight), ResourceLimitError);
+  // Through the convex pre-clip: the comb against a square still crosses itself.
+  const Paths square = {{{-1, -1}, {40, -1}, {40, 40}, {-1, 40}}};
+  EXPECT_THROW(intersect({a, b}, square, FillRule::EvenOdd, tight), ResourceLimitError);
+  EXPECT_THROW(clipLines({b}, {a, b}, FillRule::EvenOdd, LinePart::Inside, tight),
+               ResourceLimitError);
+  // A ResourceLimitError is a roiclip::Error; a large enough budget gives the full result.
+  EXPECT_THROW(simplify({a, b}, FillRule::NonZero, tight), Error);
+  const double area = simplify({a, b}, FillRule::NonZero).area();
+  EXPECT_EQ(simplify({a, b}, FillRule::NonZero, Options(Grid::fitted(), Limits{100000})).area(),
+            area);
 }
 
 }  // namespace

@@ -148,7 +148,8 @@ TEST(ClipLines, DegenerateAndInvalidInput) {
   } catch (const InvalidInputError& e) {
     EXPECT_NE(std::string(e.what()).find("line path 0, vertex 1"), std::string::npos) << e.what();
   }
-  EXPECT_THROW(clipLines({{{1, 1}, {2, 2}}}, {{{0, 0}, {1e9, 0}, {0, 1}}}, FillRule::EvenOdd),
+  EXPECT_THROW(clipLines({{{1, 1}, {2, 2}}}, {{{0, 0}, {1e9, 0}, {0, 1}}}, FillRule::EvenOdd,
+                         LinePart::Inside, Grid::fixed(256)),
                InvalidInputError);
 }
 

@@ -28,11 +28,13 @@ void expectSameSet(const PolygonSet& a, const PolygonSet& b, const std::string& 
   }
 }
 
-Paths snapped(Paths paths) {
-  const double scale = Grid{}.scale;
+// `paths` snapped to `grid` (a resolved grid: the one clip() fits to both operands).
+Paths snapped(Paths paths, const Grid& grid) {
   for (Path& path : paths) {
-    for (Point& p : path)
-      p = {std::nearbyint(p.x * scale) / scale, std::nearbyint(p.y * scale) / scale};
+    for (Point& p : path) {
+      p = {grid.toCoordinate(*grid.toUnits(p.x, grid.origin.x), grid.origin.x),
+           grid.toCoordinate(*grid.toUnits(p.y, grid.origin.y), grid.origin.y)};
+    }
   }
   return paths;
 }
@@ -102,8 +104,9 @@ TEST(PolygonSetOperands, ResultsMatchTheExactWindingOfTheRings) {
     const PolygonSet b = simplify(c, FillRule::EvenOdd);
     // A result's crossing vertices are exact doubles, off the grid; as input they are snapped
     // like any other vertex, so the truth is taken on the snapped rings.
-    const Paths aRings = snapped(a.toPaths());
-    const Paths bRings = snapped(b.toPaths());
+    const Grid grid = resolveGrid({}, a.toPaths(), b.toPaths());
+    const Paths aRings = snapped(a.toPaths(), grid);
+    const Paths bRings = snapped(b.toPaths(), grid);
     for (ClipOp op : kOps) {
       const PolygonSet got = clip(op, a, b);
       // Independently of roiclip: the rings of both sets under NonZero.

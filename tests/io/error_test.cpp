@@ -22,13 +22,13 @@ InvalidInputError coreError(Operand operand, const Paths& bad) {
   try {
     switch (operand) {
       case Operand::Subject:
-        simplify(bad, FillRule::NonZero);
+        simplify(bad, FillRule::NonZero, Grid::fixed(256));  // the range of the messages below
         break;
       case Operand::Clip:
-        intersect({kSquare}, bad);
+        intersect({kSquare}, bad, FillRule::EvenOdd, Grid::fixed(256));
         break;
       case Operand::Line:
-        clipLines(bad, {kSquare}, FillRule::EvenOdd);
+        clipLines(bad, {kSquare}, FillRule::EvenOdd, LinePart::Inside, Grid::fixed(256));
         break;
       case Operand::None:
         break;
@@ -106,7 +106,8 @@ TEST(InvalidInputError, CoreThrowSitesSetTheFields) {
   // The region of clipLines() is the clip operand.
   const InvalidInputError region = [] {
     try {
-      clipLines({{{1, 1}, {2, 2}}}, {{{0, 0}, {1e9, 0}, {0, 1}}}, FillRule::EvenOdd);
+      clipLines({{{1, 1}, {2, 2}}}, {{{0, 0}, {1e9, 0}, {0, 1}}}, FillRule::EvenOdd,
+                LinePart::Inside, Grid::fixed(256));
     } catch (const InvalidInputError& e) {
       return e;
     }

@@ -10,8 +10,16 @@
 #include <gtest/gtest.h>
 
 #include <roiclip/error.hpp>
+#include <roiclip/io/feature.hpp>
 
 namespace roiclip::io {
+
+// What the CLI's --strict reads with: degenerate rings and lines refused (the default keeps them).
+inline ReadOptions strictOptions() {
+  ReadOptions options;
+  options.allowDegenerateRings = false;
+  return options;
+}
 
 // Runs `f`, requires an InvalidInputError and every fragment in its message.
 inline void expectInvalid(const std::function<void()>& f,

@@ -3,6 +3,7 @@
 // writing; ring orientation; format detection; the snapping check; warnings for z coordinates.
 #include <unistd.h>
 
+#include <cmath>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -13,6 +14,8 @@
 #include <roiclip/io/atomic_file.hpp>
 #include <roiclip/io/feature.hpp>
 #include <roiclip/io/geojson.hpp>
+
+#include "expect_invalid.hpp"
 
 namespace roiclip::io {
 namespace {
@@ -115,7 +118,7 @@ TEST(ClipFeatures, CoreErrorsNameTheFileAndTheFlatPathIndex) {
   far[1].polygons[0][0][1].x = 5e6;  // feature 1, ring 0 is path 1 of the file
   try {
     clipFeatures(ClipOp::Intersection, parcels, "p.json", far, "far.json", FillRule::EvenOdd,
-                 FillRule::EvenOdd);
+                 FillRule::EvenOdd, Grid::fixed(256));  // 5e6 is beyond its range
     ADD_FAILURE() << "no error";
   } catch (const InvalidInputError& e) {
     EXPECT_EQ(e.location().source, "far.json");
@@ -124,7 +127,7 @@ TEST(ClipFeatures, CoreErrorsNameTheFileAndTheFlatPathIndex) {
     EXPECT_EQ(e.location().vertex, 1u);
   }
   try {
-    simplifyFeatures(far, "far.json", FillRule::EvenOdd);
+    simplifyFeatures(far, "far.json", FillRule::EvenOdd, Grid::fixed(256));
     ADD_FAILURE() << "no error";
   } catch (const InvalidInputError& e) {
     EXPECT_EQ(std::string(e.what()).rfind("far.json: path 1, vertex 1: x = ", 0), 0u) << e.what();
@@ -172,7 +175,7 @@ TEST(ReadOptions, ZCoordinatesAreDroppedWithOneWarning) {
 }
 
 TEST(SnapWarnings, PixelCoordinatesNoneGisCoordinatesOne) {
-  const Grid grid;  // 1/256 px
+  const Grid grid = Grid::fixed(256);  // 1/256 px
   EXPECT_TRUE(snapWarnings(readPaths(kData + "frame.geojson"), "frame", grid).empty());
   EXPECT_TRUE(snapWarnings({{{0.5, 0.25}, {1.0 / 256, 3}, {7, 7}}}, "s", grid).empty());
   // 0.2 px is 51.2 units: moved by 0.2 units, not counted; 0.123456789 px moves by 0.395 units.
@@ -187,6 +190,8 @@ TEST(SnapWarnings, PixelCoordinatesNoneGisCoordinatesOne) {
       << w[0].what();
   // A grid fine enough for the digits there are: no warning.
   EXPECT_TRUE(snapWarnings({{{0.2, 0.2}, {1, 0}, {1, 1}}}, "f", Grid{1024.0 * 1024 * 64}).empty());
+  // A fitted grid (the default) moves nothing by a visible amount: never a warning.
+  EXPECT_TRUE(snapWarnings(readPaths(kData + "gis_square.geojson"), "g", Grid{}).empty());
 }
 
 TEST(WriteFileAtomically, ADirectoryIsSaidToBeOne) {
@@ -212,6 +217,62 @@ TEST(WriteFileAtomically, ADirectoryIsSaidToBeOne) {
     EXPECT_EQ(std::string(e.what()), dir.string() + ": is a directory");
   }
   fs::remove_all(dir);
+}
+
+// Degenerate rings (fewer than 3 distinct points, or all points on a line) through every reader:
+// kept by default, contributing nothing, and counted as ignoredRings; refused when strict.
+TEST(DegenerateRings, EveryReaderKeepsThemAndTheOperationsCountThem) {
+  const std::vector<std::pair<std::string, Format>> inputs = {
+      {R"({"type":"MultiPolygon","coordinates":[[[[0,0],[10,0],[10,10],[0,10],[0,0]]],
+          [[[20,20],[21,21],[20,20]]], [[[30,30],[31,31],[32,32],[30,30]]]]})",
+       Format::GeoJson},
+      {R"({"type":"FeatureCollection","features":[{"type":"Feature","properties":null,
+          "geometry":{"type":"MultiPolygon","coordinates":[[[[0,0],[10,0],[10,10],[0,10]]],
+          [[[20,20],[21,21]]], [[[30,30],[31,31],[32,32]]]]}}]})",
+       Format::GeoJson},
+      {R"({"paths": [[[0,0],[10,0],[10,10],[0,10]], [[20,20],[21,21]], [[30,30],[31,31],[32,32]]]})",
+       Format::GeoJson},
+      {"MULTIPOLYGON (((0 0, 10 0, 10 10, 0 10, 0 0)), ((20 20, 21 21, 20 20)), "
+       "((30 30, 31 31, 32 32, 30 30)))",
+       Format::Wkt},
+      {"GEOMETRYCOLLECTION (POLYGON ((0 0, 10 0, 10 10, 0 10, 0 0)), POLYGON ((20 20, 20 20, 20 "
+       "20)), POLYGON ((30 30, 31 31, 32 32, 30 30)))",
+       Format::Wkt},
+  };
+  for (const auto& [text, format] : inputs) {
+    SCOPED_TRACE(text);
+    const std::vector<Feature> features = parseAnyFeatures(text, "in", format);
+    ASSERT_EQ(allRings(features).size(), 3u);
+    const std::vector<Feature> simple = simplifyFeatures(features, "in", FillRule::EvenOdd);
+    ASSERT_EQ(simple.size(), features.size());
+    std::size_t ignored = 0;
+    double area = 0;
+    for (const Feature& f : simple) {
+      ignored += f.ignoredRings;
+      for (const Paths& polygon : f.polygons) area -= signedArea(polygon[0]);
+    }
+    EXPECT_EQ(ignored, 2u);
+    EXPECT_NEAR(std::fabs(area), 100.0, 0);
+    const std::vector<Feature> clipped =
+        clipFeatures(ClipOp::Intersection, features, "in",
+                     {toFeature(simplify({{{0, 0}, {5, 0}, {5, 5}}}, FillRule::NonZero))}, "clip",
+                     FillRule::EvenOdd, FillRule::NonZero);
+    ignored = 0;
+    for (const Feature& f : clipped) ignored += f.ignoredRings;
+    EXPECT_EQ(ignored, 2u);
+    // The summary properties name the count (features with their own properties keep them).
+    for (std::size_t i = 0; i < simple.size(); ++i) {
+      if (features[i].propertiesJson.empty() && simple[i].ignoredRings > 0) {
+        EXPECT_NE(simple[i].propertiesJson.find("\"ignoredRings\":" +
+                                                std::to_string(simple[i].ignoredRings)),
+                  std::string::npos)
+            << simple[i].propertiesJson;
+      }
+    }
+    // Strict (the CLI's --strict): the reader refuses the file, naming the ring.
+    expectInvalid([&] { parseAnyFeatures(text, "in", format, strictOptions()); },
+                  {"in: ", "path 1", "fewer than 3 distinct points"});
+  }
 }
 
 }  // namespace

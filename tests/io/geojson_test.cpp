@@ -218,13 +218,15 @@ TEST(ReadErrors, InfiniteLiteral) {
 }
 
 TEST(ReadErrors, RingWithFewerThanThreeDistinctPoints) {
-  expectInvalid([] { readPaths(kData + "degenerate_ring.geojson"); },
+  // Refused only when strict (the CLI's --strict); by default kept, and the core ignores them.
+  expectInvalid([] { readPaths(kData + "degenerate_ring.geojson", strictOptions()); },
                 {"degenerate_ring.geojson", "polygon 1, ring 0", "(path 1)", "fewer than 3"});
-  expectInvalid([] { parsePaths(R"({"paths": [[[0,0],[1,0],[1,1]], [[2,2],[3,3]]]})", "p.json"); },
-                {"p.json", "path 1", "fewer than 3"});
-  ReadOptions lenient;
-  lenient.allowDegenerateRings = true;
-  const Paths kept = readPaths(kData + "degenerate_ring.geojson", lenient);
+  expectInvalid(
+      [] {
+        parsePaths(R"({"paths": [[[0,0],[1,0],[1,1]], [[2,2],[3,3]]]})", "p.json", strictOptions());
+      },
+      {"p.json", "path 1", "fewer than 3"});
+  const Paths kept = readPaths(kData + "degenerate_ring.geojson");
   ASSERT_EQ(kept.size(), 2u);
   EXPECT_EQ(kept[1].size(), 4u);
   EXPECT_DOUBLE_EQ(simplify(kept, FillRule::EvenOdd).area(), 50.0);
@@ -328,13 +330,13 @@ TEST(LineErrors, NaNAndNonNumbersNameTheLine) {
 }
 
 TEST(LineErrors, LineWithFewerThanTwoPoints) {
-  expectInvalid([] { parseLines(R"({"paths": [[[0,0],[1,1]], [[2,2]]]})", "p.json"); },
-                {"p.json", "path 1", "line has fewer than 2 points"});
-  expectInvalid([] { parseLines(R"({"type":"LineString","coordinates":[]})", "q.json"); },
-                {"q.json", "geometry, line 0 (path 0)", "fewer than 2 points"});
-  ReadOptions lenient;
-  lenient.allowDegenerateRings = true;
-  const Paths kept = parseLines(R"({"paths": [[[0,0],[4,0]], [[2,2]], []]})", "p.json", lenient);
+  expectInvalid(
+      [] { parseLines(R"({"paths": [[[0,0],[1,1]], [[2,2]]]})", "p.json", strictOptions()); },
+      {"p.json", "path 1", "line has fewer than 2 points"});
+  expectInvalid(
+      [] { parseLines(R"({"type":"LineString","coordinates":[]})", "q.json", strictOptions()); },
+      {"q.json", "geometry, line 0 (path 0)", "fewer than 2 points"});
+  const Paths kept = parseLines(R"({"paths": [[[0,0],[4,0]], [[2,2]], []]})", "p.json");
   ASSERT_EQ(kept.size(), 3u);
   // The core gives nothing for them, as the header promises.
   const Paths square = readPaths(kData + "square.geojson");

@@ -83,7 +83,10 @@ TEST(ParseWkt, Errors) {
   expectInvalid([] { parseWktFeatures("POLYGON ((0 0, nan 0, 1 1, 0 0))", "f.wkt"); },
                 {"f.wkt: polygon 0, ring 0 (path 0), point 1: x is not finite"});
   expectInvalid(
-      [] { parseWktFeatures("MULTIPOLYGON (((0 0, 1 0, 1 1)), ((0 0, 1 1, 0 0)))", "g.wkt"); },
+      [] {
+        parseWktFeatures("MULTIPOLYGON (((0 0, 1 0, 1 1)), ((0 0, 1 1, 0 0)))", "g.wkt",
+                         strictOptions());
+      },
       {"g.wkt: polygon 1, ring 0 (path 1): ring has fewer than 3 distinct points"});
   expectInvalid([] { parseWktFeatures("GEOMETRYCOLLECTION (POLYGON ((0 0, 1 0, 1 1))", "h"); },
                 {"h: ", "unbalanced parentheses"});
@@ -97,7 +100,7 @@ TEST(ParseWktLines, LineStringsAndCollections) {
                           " LINESTRING (5 5, 6 6))")
                 .size(),
             3u);
-  expectInvalid([] { parseWktLines("LINESTRING (0 0)", "l"); },
+  expectInvalid([] { parseWktLines("LINESTRING (0 0)", "l", strictOptions()); },
                 {"l: line 0 (path 0)", "fewer than 2"});
   expectInvalid([] { parseWktLines("POLYGON ((0 0, 1 0, 1 1, 0 0))", "p"); },
                 {"p: ", "unsupported geometry type \"POLYGON\""});

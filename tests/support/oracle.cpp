@@ -154,4 +154,67 @@ std::string fixtureDir() {
   return env != nullptr ? std::string(env) : std::string(ROICLIP_TEST_DATA) + "/core";
 }
 
+double exactSlabArea(const std::vector<const Paths*>& inputs,
+                     const std::function<bool(const std::vector<long long>&)>& inside) {
+  using Q = boost::multiprecision::cpp_rational;
+  struct Edge {
+    Q ax, ay, bx, by;  // a.x < b.x
+    int operand, dir;
+  };
+  std::vector<Edge> edges;
+  std::vector<Q> xs;
+  for (std::size_t k = 0; k < inputs.size(); ++k) {
+    for (const Path& path : *inputs[k]) {
+      for (std::size_t i = 0; i < path.size(); ++i) {
+        const Point a = path[i], b = path[(i + 1) % path.size()];
+        xs.emplace_back(a.x);
+        if (a.x < b.x) edges.push_back({Q(a.x), Q(a.y), Q(b.x), Q(b.y), int(k), +1});
+        if (a.x > b.x) edges.push_back({Q(b.x), Q(b.y), Q(a.x), Q(a.y), int(k), -1});
+      }
+    }
+  }
+  for (std::size_t i = 0; i < edges.size(); ++i) {
+    for (std::size_t j = i + 1; j < edges.size(); ++j) {
+      const Edge& e = edges[i];
+      const Edge& f = edges[j];
+      const Q rx = e.bx - e.ax, ry = e.by - e.ay, sx = f.bx - f.ax, sy = f.by - f.ay;
+      const Q den = rx * sy - ry * sx;
+      if (den == 0) continue;
+      const Q t = ((f.ax - e.ax) * sy - (f.ay - e.ay) * sx) / den;
+      const Q u = ((f.ax - e.ax) * ry - (f.ay - e.ay) * rx) / den;
+      if (t > 0 && t < 1 && u > 0 && u < 1) xs.push_back(e.ax + t * rx);
+    }
+  }
+  std::sort(xs.begin(), xs.end());
+  xs.erase(std::unique(xs.begin(), xs.end()), xs.end());
+  Q area = 0;
+  for (std::size_t i = 0; i + 1 < xs.size(); ++i) {
+    const Q& x0 = xs[i];
+    const Q& x1 = xs[i + 1];
+    const Q xm = (x0 + x1) / 2;
+    struct Cut {
+      Q y0, ym, y1;
+      int operand, dir;
+    };
+    std::vector<Cut> cuts;
+    for (const Edge& e : edges) {
+      if (e.ax <= xm && xm < e.bx) {
+        const auto y = [&](const Q& x) {
+          return e.ay + (e.by - e.ay) * (x - e.ax) / (e.bx - e.ax);
+        };
+        cuts.push_back({y(x0), y(xm), y(x1), e.operand, e.dir});
+      }
+    }
+    std::sort(cuts.begin(), cuts.end(), [](const Cut& a, const Cut& b) { return a.ym < b.ym; });
+    std::vector<long long> w(inputs.size(), 0);
+    for (std::size_t c = 0; c + 1 < cuts.size(); ++c) {
+      w[std::size_t(cuts[c].operand)] += cuts[c].dir;
+      if (inside(w)) {
+        area += ((cuts[c + 1].y0 - cuts[c].y0) + (cuts[c + 1].y1 - cuts[c].y1)) * (x1 - x0) / 2;
+      }
+    }
+  }
+  return area.convert_to<double>();
+}
+
 }  // namespace roiclip::testing

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <random>
 #include <sstream>
@@ -316,6 +317,12 @@ double slabArea(const std::vector<const Paths*>& inputs, Inside inside) {
   }
   return area;
 }
+
+/// The same slab integration in exact rationals (Boost cpp_rational): every vertex, crossing and
+/// trapezoid exactly as the input doubles say, rounded to double once at the end. For map
+/// coordinates (5e6 offsets, longitude/latitude), where slabArea()'s doubles cancel. O(n^3).
+double exactSlabArea(const std::vector<const Paths*>& inputs,
+                     const std::function<bool(const std::vector<long long>&)>& inside);
 
 /// Random polygon generators (fixed seeds by the caller).
 inline Path randomPolygon(std::mt19937& rng, int n, int size) {

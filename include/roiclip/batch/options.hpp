@@ -46,7 +46,14 @@ struct RunOptions {
   ContourOptions contours;  ///< how contours are found (method, polarity, minimum area, ...)
   FillRule subjectFillRule = FillRule::EvenOdd;  ///< for the contours (as cv::fillPoly draws)
   FillRule roiFillRule = FillRule::EvenOdd;      ///< for the ROI paths
-  Grid grid{};  ///< the core's coordinate grid for every clip of the image
+  /// The core's coordinate grid for every clip of the image: fixed at 1/256 px, so that every
+  /// clip of a run snaps alike and matches the 1/256 px masks of the mask check
+  /// (opencv::kRasterGrid); pixel contours are exact on it.
+  Grid grid = Grid::fixed(256.0);
+  /// The work budget of each clip of the image (the clips run one after another, so this bounds
+  /// the memory of the image): 25,000,000 crossings by default (--max-crossings); an image over it
+  /// fails with its reason. Not part of optionsKey(), like maxPixels.
+  Limits limits{Limits::kToolMaxCrossings};
   /// Images with more pixels (width x height) are refused (FailureKind::TooLarge); run() checks
   /// the file's header before decoding. <= 0: no limit. Not part of optionsKey(): it guards
   /// decoding and changes no result, so up-to-date outputs stay up to date.

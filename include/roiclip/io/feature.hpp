@@ -30,11 +30,11 @@ struct Warning {
 
 /// How strictly rings are checked while reading, and where warnings go.
 struct ReadOptions {
-  /// When false (the default), a ring with fewer than 3 distinct points is an InvalidInputError,
-  /// and so is a polyline with fewer than 2 points (parseLines()). When true, such rings and lines
-  /// are kept as they are (the core ignores them); conformance data from other projects contains
-  /// them on purpose.
-  bool allowDegenerateRings = false;
+  /// When true (the default), a ring with fewer than 3 distinct points, or a polyline with fewer
+  /// than 2 points, is kept as it is: the core ignores it (it contributes nothing), and the
+  /// feature-wise operations count it (Feature::ignoredRings). When false (the CLI's --strict),
+  /// such a ring or line is an InvalidInputError naming it.
+  bool allowDegenerateRings = true;
   /// When set, non-fatal findings are appended here: a third (z) coordinate, which every reader
   /// drops (roiclip is 2-D), gives one Warning per input. When null they are dropped silently.
   std::vector<Warning>* warnings = nullptr;
@@ -71,6 +71,10 @@ struct Feature {
   /// (`{"name":"roi","n":3}`, or `null`). Empty when the input had no Feature at all (a bare
   /// geometry, plain paths JSON, WKT): the operations below then fill in "area" and "rings".
   std::string propertiesJson;
+  /// In results of simplifyFeatures() and clipFeatures(): how many of the input feature's rings
+  /// contributed nothing (countDegeneratePaths()). Written as the property "ignoredRings" when
+  /// non-zero and the feature has roiclip's summary properties ("area", "rings").
+  std::size_t ignoredRings = 0;
 };
 
 /// Every ring of every polygon of `features` as one path set, in order (the core's input).
@@ -80,8 +84,9 @@ Paths allRings(const std::vector<Feature>& features);
 Feature dissolve(const std::vector<Feature>& features);
 
 /// A PolygonSet as a feature: each polygon its outer ring, then its holes; properties
-/// {"area": set.area(), "rings": set.ringCount()}; no id.
-Feature toFeature(const PolygonSet& set);
+/// {"area": set.area(), "rings": set.ringCount()}, plus "ignoredRings" when `ignoredRings` is
+/// non-zero; no id.
+Feature toFeature(const PolygonSet& set, std::size_t ignoredRings = 0);
 
 /// The name of the input (a file) an operand of the core was read from.
 struct Source {
@@ -103,7 +108,7 @@ InvalidInputError nameSource(const InvalidInputError& e, std::initializer_list<S
 /// @throws InvalidInputError from the core, naming `source` and the flat path index.
 std::vector<Feature> simplifyFeatures(const std::vector<Feature>& features,
                                       const std::string& source, FillRule rule,
-                                      const Grid& grid = {});
+                                      const Options& options = {});
 
 /// clip() of each subject feature (its rings under `subjectRule`) by the union of the clip
 /// features (each feature's rings under `clipRule`, then the union of all of them): one result
@@ -112,12 +117,14 @@ std::vector<Feature> simplifyFeatures(const std::vector<Feature>& features,
 std::vector<Feature> clipFeatures(ClipOp op, const std::vector<Feature>& subject,
                                   const std::string& subjectSource,
                                   const std::vector<Feature>& clip, const std::string& clipSource,
-                                  FillRule subjectRule, FillRule clipRule, const Grid& grid = {});
+                                  FillRule subjectRule, FillRule clipRule,
+                                  const Options& options = {});
 
-/// How far snapping to the grid moves input coordinates: the core rounds each coordinate to the
-/// nearest multiple of 1/grid.scale, so a coordinate moves by up to half a grid step. Pixel
-/// coordinates (integers, halves, ...) do not move; coordinates with more digits than the grid
-/// holds (GIS data, sub-pixel edges) do.
+/// How far snapping to a fixed grid moves input coordinates: the core rounds each coordinate to
+/// the nearest grid point (Grid::toUnits()), so a coordinate moves by up to half a grid step.
+/// Pixel coordinates (integers, halves, ...) do not move; coordinates with more digits than the
+/// grid holds (GIS data, sub-pixel edges) do. A fitted grid (the default) moves none by more than
+/// about 2^-31 of the extent and is not measured (an empty SnapShift).
 struct SnapShift {
   std::size_t vertices = 0;  ///< vertices looked at
   std::size_t moved = 0;     ///< vertices with a coordinate moved by more than the threshold
@@ -130,7 +137,7 @@ struct SnapShift {
 /// 1/4 step, i.e. 1/1024 px at the default 1/256 px grid.
 inline constexpr double kSnapWarningFraction = 0.25;
 
-/// The SnapShift of `paths` on `grid`.
+/// The SnapShift of `paths` on `grid` (a fixed grid; a fitted one gives an empty SnapShift).
 SnapShift measureSnapShift(const Paths& paths, const Grid& grid);
 
 /// A Warning for `source` when snapping moves any coordinate of `paths` by more than

@@ -8,6 +8,10 @@
 
 namespace roiclip::opencv {
 
+/// The grid rasterize() snaps to when it is given a fitted grid (the default): 1/256 px, fixed,
+/// so that masks of different calls line up pixel for pixel (the mask checks compare them).
+inline const Grid kRasterGrid = Grid::fixed(256.0);
+
 /// Rasterise closed paths under a fill rule into a CV_8U mask (255 = inside, 0 = outside).
 ///
 /// Which pixels are set (exactly; no anti-aliasing, no edge lines):
@@ -29,7 +33,8 @@ namespace roiclip::opencv {
 ///
 /// @param paths closed paths in pixel coordinates (parts outside the image are ignored).
 /// @param size  mask size (width, height); may be empty.
-/// @param grid  snapping grid; grid.scale must be a positive integer <= 2^16.
+/// @param grid  snapping grid: fixed, origin (0, 0), grid.scale a positive integer <= 2^16; a
+///              fitted grid (the default) means kRasterGrid.
 /// @throws InvalidInputError on NaN, infinity, a coordinate outside the grid's range, or a bad
 ///         grid; the message names the path and vertex.
 cv::Mat rasterize(const Paths& paths, FillRule rule, cv::Size size, const Grid& grid = {});

@@ -29,7 +29,7 @@ TEST(StageBooleanOp, GeneralPathGivesEveryOperation) {
   for (const auto& [op, area] : expected) {
     SCOPED_TRACE(toString(op));
     const PolygonSet general =
-        detail::booleanGeneral(kSquare, &kShifted, stages::clipWith(op), Grid{});
+        detail::booleanGeneral(kSquare, &kShifted, stages::clipWith(op), Grid::fixed(256));
     EXPECT_NEAR(general.area(), area, 1e-12);
     EXPECT_EQ(testing::structureProblems(general), "");
     // The public entry point gives the same region (for the intersection with a convex ring it
@@ -38,7 +38,8 @@ TEST(StageBooleanOp, GeneralPathGivesEveryOperation) {
                 1e-12);
   }
   EXPECT_EQ(
-      detail::booleanGeneral(kSquare, &kShifted, stages::clipWith(ClipOp::Xor), Grid{}).ringCount(),
+      detail::booleanGeneral(kSquare, &kShifted, stages::clipWith(ClipOp::Xor), Grid::fixed(256))
+          .ringCount(),
       2u);
 }
 
@@ -46,7 +47,7 @@ TEST(StageBooleanOp, SimplifyIsTheGeneralPathWithOneOperand) {
   const Paths twice = {kSquare[0], kShifted[0]};
   for (FillRule rule : {FillRule::EvenOdd, FillRule::NonZero, FillRule::Negative}) {
     const PolygonSet general =
-        detail::booleanGeneral(twice, nullptr, stages::simplifyWith(rule), Grid{});
+        detail::booleanGeneral(twice, nullptr, stages::simplifyWith(rule), Grid::fixed(256));
     EXPECT_EQ(general.area(), simplify(twice, rule).area()) << toString(rule);
   }
   EXPECT_NEAR(simplify(twice, FillRule::EvenOdd).area(), 150, 1e-12);

@@ -113,7 +113,7 @@ TEST(ConvexPath, SameRegionAsGeneralPath) {
     }
     const Paths convex = {randomConvex(rng, 3 + int(rng() % 6), iter % 2 == 1)};
     // Only grid-snapped convex rings take the fast path; make sure this one does.
-    const auto rings = detail::snapRings(convex, 1, Grid{});
+    const auto rings = detail::snapRings(convex, 1, Grid::fixed(256));
     if (rings.size() != 1 || detail::convexOrientation(rings[0]) == 0) continue;
     ++convexClips;
     for (FillRule rs : kRules) {
@@ -123,7 +123,7 @@ TEST(ConvexPath, SameRegionAsGeneralPath) {
         how.op = ClipOp::Intersection;
         how.subjectRule = rs;
         how.clipRule = rc;
-        const PolygonSet general = detail::booleanGeneral(subject, &convex, how, Grid{});
+        const PolygonSet general = detail::booleanGeneral(subject, &convex, how, Grid::fixed(256));
         const PolygonSet fast = clip(ClipOp::Intersection, subject, convex, rs, rc);
         ASSERT_NEAR(fast.area(), general.area(), 1e-9)
             << toString(rs) << "/" << toString(rc) << " S " << testing::describe(subject) << " C "

@@ -23,9 +23,10 @@ using stages::kUnitGrid;
 std::vector<IPoint> ring(std::initializer_list<IPoint> points) { return points; }
 
 TEST(StageInput, SnapsToTheGridRoundingTiesToEven) {
-  // Default grid: 1/256 px. 0.5 and 1.5 units are ties: to even, 0 and 2.
-  const auto rings = detail::snapRings(
-      {{{0.5 / 256, 0}, {10, 1.5 / 256}, {10, 10 + 0.6 / 256}, {-0.4 / 256, 10}}}, 0, Grid{});
+  // A fixed 1/256 px grid. 0.5 and 1.5 units are ties: to even, 0 and 2.
+  const auto rings =
+      detail::snapRings({{{0.5 / 256, 0}, {10, 1.5 / 256}, {10, 10 + 0.6 / 256}, {-0.4 / 256, 10}}},
+                        0, Grid::fixed(256));
   ASSERT_EQ(rings.size(), 1u);
   EXPECT_EQ(rings[0], ring({{0, 0}, {2560, 2}, {2560, 2561}, {0, 2560}}));
 }
@@ -94,14 +95,14 @@ TEST(StageInput, LineEdgesKeepPathOrderAndIndexThePolylines) {
 TEST(StageInput, InvalidCoordinatesNameOperandPathAndVertex) {
   std::vector<detail::InputEdge> edges;
   try {
-    detail::appendInputEdges({{{0, 0}, {1, 0}, {1, 1}}, {{0, 0}, {std::nan(""), 0}}}, 1, Grid{},
-                             edges);
+    detail::appendInputEdges({{{0, 0}, {1, 0}, {1, 1}}, {{0, 0}, {std::nan(""), 0}}}, 1,
+                             Grid::fixed(256), edges);
     FAIL() << "NaN accepted";
   } catch (const InvalidInputError& e) {
     EXPECT_NE(std::string(e.what()).find("clip path 1, vertex 1: x"), std::string::npos)
         << e.what();
   }
-  EXPECT_THROW(detail::snapRings({{{0, 0}, {1, 0}}}, 0, Grid{-1.0}), InvalidInputError);
+  EXPECT_THROW(resolveGrid(Grid{-1.0}, {{{0, 0}, {1, 0}}}), InvalidInputError);
 }
 
 TEST(Simplify, DegenerateInputGivesEmptyResult) {
@@ -120,12 +121,17 @@ TEST(Simplify, InvalidInputIsRejectedWithItsLocation) {
   } catch (const InvalidInputError& e) {
     EXPECT_NE(std::string(e.what()).find("path 0, vertex 2"), std::string::npos) << e.what();
   }
-  EXPECT_THROW(simplify({{{0, 0}, {1e7, 0}, {1, 1}}}, FillRule::NonZero), InvalidInputError);
-  EXPECT_THROW(simplify({{{0, 0}, {INFINITY, 0}, {1, 1}}}, FillRule::NonZero), InvalidInputError);
-  EXPECT_THROW(simplify({{{0, 0}, {1, 0}, {1, 1}}}, FillRule::NonZero, Grid{0.0}),
+  // Beyond a fixed grid's range (the default, fitted grid takes any finite input).
+  EXPECT_THROW(simplify({{{0, 0}, {1e7, 0}, {1, 1}}}, FillRule::NonZero, Grid::fixed(256)),
                InvalidInputError);
-  // The range edge is accepted: 2^30 units at the default scale.
-  EXPECT_NO_THROW(simplify({{{0, 0}, {4194304, 0}, {0, -4194304}}}, FillRule::NonZero));
+  EXPECT_THROW(simplify({{{0, 0}, {INFINITY, 0}, {1, 1}}}, FillRule::NonZero), InvalidInputError);
+  EXPECT_THROW(simplify({{{0, 0}, {1, 0}, {1, 1}}}, FillRule::NonZero, Grid{-1.0}),
+               InvalidInputError);
+  EXPECT_THROW(simplify({{{0, 0}, {1, 0}, {1, 1}}}, FillRule::NonZero, Grid{INFINITY}),
+               InvalidInputError);
+  // The range edge is accepted: 2^30 units at scale 256.
+  EXPECT_NO_THROW(
+      simplify({{{0, 0}, {4194304, 0}, {0, -4194304}}}, FillRule::NonZero, Grid::fixed(256)));
 }
 
 }  // namespace

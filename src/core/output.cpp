@@ -1,0 +1,135 @@
+// SPDX-License-Identifier: MIT
+// Output: exact points to correctly rounded doubles (see output.hpp).
+#include "output.hpp"
+
+#include <cfloat>
+#include <cmath>
+
+#include <roiclip/error.hpp>
+
+namespace roiclip::detail {
+namespace {
+
+using u128 = unsigned __int128;
+using u256 = boost::multiprecision::uint256_t;
+
+int bitLength(u128 v) {
+  const auto hi = std::uint64_t(v >> 64), lo = std::uint64_t(v);
+  if (hi != 0) return 128 - __builtin_clzll(hi);
+  return lo != 0 ? 64 - __builtin_clzll(lo) : 0;
+}
+int bitLength(const u256& v) { return v == 0 ? 0 : int(boost::multiprecision::msb(v)) + 1; }
+
+u128 toU128(const u256& v) {
+  const u256 mask = (u256(1) << 64) - 1;
+  return (u128(static_cast<std::uint64_t>((v >> 64) & mask)) << 64) |
+         u128(static_cast<std::uint64_t>(v & mask));
+}
+
+// n / d * 2^exp2 rounded to nearest, ties to even: q = floor(n * 2^sh / d) with 55 or 56 bits,
+// then its 53 leading bits (fewer when the result is subnormal), rounded on the bits below them
+// and on whether the division left a remainder.
+template <class U>
+double nearestUnsigned(U n, U d, int exp2) {
+  const int nb = bitLength(n), db = bitLength(d);
+  const int sh = 55 - (nb - db);
+  if (sh >= 0) {
+    n <<= sh;
+  } else {
+    d <<= -sh;
+  }
+  const U q = n / d;
+  const bool sticky = q * d != n;
+  const int qb = bitLength(q);              // 55 or 56
+  const int exponent = qb - 1 + exp2 - sh;  // floor(log2(value))
+  int precision = 53;
+  if (exponent < -1022) precision -= -1022 - exponent;  // subnormal: fewer bits
+  if (precision < 0) return 0.0;                        // below half the least subnormal
+  const int drop = qb - precision;                      // 2 .. 56
+  std::uint64_t m = drop < qb ? static_cast<std::uint64_t>(q >> drop) : 0;
+  const auto rest = static_cast<std::uint64_t>(q - (U(m) << drop));  // < 2^56
+  const std::uint64_t half = std::uint64_t{1} << (drop - 1);
+  if (rest > half || (rest == half && (sticky || (m & 1) != 0))) ++m;
+  return std::ldexp(double(m), exp2 - sh + drop);
+}
+
+// Within 128 bits after the shift (the common case) in native integer division.
+bool fits128(int nb, int db) {
+  const int sh = 55 - (nb - db);
+  return nb <= 127 && db <= 127 && (sh >= 0 ? nb + sh : db - sh) <= 127;
+}
+
+}  // namespace
+
+double nearestDouble(const i256& num, const i256& den, int exp2) {
+  if (num == 0) return 0.0;
+  const bool negative = num < 0;
+  const u256 n = u256(negative ? i256(-num) : num);
+  const u256 d = u256(den);
+  const double v = fits128(bitLength(n), bitLength(d))
+                       ? nearestUnsigned<u128>(toU128(n), toU128(d), exp2)
+                       : nearestUnsigned<u256>(n, d, exp2);
+  return negative ? -v : v;
+}
+
+OutputFrame::OutputFrame(const Grid& grid) {
+  int e = 0;
+  const double f = std::frexp(grid.scale, &e);  // scale = f * 2^e, f in [0.5, 1)
+  // The mantissa as an odd integer: scale = m * 2^(e - 53) with m < 2^53, then the trailing zeros
+  // moved to the exponent.
+  auto m = std::int64_t(std::ldexp(f, 53));
+  e -= 53;
+  while (m != 0 && (m & 1) == 0) {
+    m >>= 1;
+    ++e;
+  }
+  scaleMantissa_ = m;
+  scaleExponent_ = e;
+  const double origin[2] = {grid.origin.x, grid.origin.y};
+  for (int axis = 0; axis < 2; ++axis) {
+    const double o = origin[axis] * grid.scale;  // an integer: the origin lies on the grid
+    if (!(std::fabs(o) <= 0x1p100) || o != std::floor(o)) {
+      throw InternalError("OutputFrame: the grid's origin is not on the grid");
+    }
+    originUnits_[axis] = i128(o);
+  }
+}
+
+double OutputFrame::coordinate(i128 units, i128 w, int axis) const {
+  const i128 o = originUnits_[axis];
+  if (w == 1 && scaleMantissa_ == 1) {
+    // A grid point on a power-of-two grid: one exact conversion when it fits 53 bits.
+    const i128 n = units + o;
+    constexpr i128 kExact = i128(1) << 53;
+    if (n > -kExact && n < kExact) {
+      const double v = std::ldexp(double(n), -scaleExponent_);
+      if (n == 0 || std::fabs(v) >= DBL_MIN) return v;
+    }
+  }
+  // (units / w + o) / (m * 2^e) = (units + o * w) / (w * m) * 2^-e
+  i128 ow = 0, n = 0, d = 0;
+  if (!__builtin_mul_overflow(o, w, &ow) && !__builtin_add_overflow(units, ow, &n) &&
+      !__builtin_mul_overflow(w, scaleMantissa_, &d) && n > -(i128(1) << 126) &&
+      n < (i128(1) << 126)) {
+    if (n == 0) return 0.0;
+    const u128 un = n < 0 ? u128(-n) : u128(n);
+    if (fits128(bitLength(un), bitLength(u128(d)))) {
+      const double v = nearestUnsigned<u128>(un, u128(d), -scaleExponent_);
+      return n < 0 ? -v : v;
+    }
+  }
+  const i256 num = wide(units) + wide(o) * wide(w);
+  const i256 den = wide(w) * wide(scaleMantissa_);
+  return nearestDouble(num, den, -scaleExponent_);
+}
+
+}  // namespace roiclip::detail
+
+namespace roiclip {
+
+double Grid::toCoordinate(std::int64_t units, double originCoordinate) const {
+  Grid axisGrid = Grid::fixed(scale, {originCoordinate, originCoordinate});
+  return detail::OutputFrame(axisGrid).coordinate(units, 1, 0);
+}
+
+}  // namespace roiclip

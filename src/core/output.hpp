@@ -1,0 +1,36 @@
+// SPDX-License-Identifier: MIT
+// roiclip private header: exact points back to doubles, correctly rounded (the output stage of
+// nesting.cpp and clip_lines.cpp, and Grid::toCoordinate()).
+#pragma once
+
+#include <roiclip/geometry.hpp>
+
+#include "predicates.hpp"
+
+namespace roiclip::detail {
+
+/// The double nearest to (num / den) * 2^exp2, ties to even (subnormal results included);
+/// den > 0. Exact integer division and remainder, no floating-point step.
+double nearestDouble(const i256& num, const i256& den, int exp2);
+
+/// Converts exact grid points (X/W, Y/W) on a resolved grid (resolveGrid()) to coordinates:
+/// each is the double nearest to (X/W) / scale + origin, so equal exact points give equal doubles
+/// whichever segments they were computed from, and whether or not X/W is reduced.
+class OutputFrame {
+ public:
+  /// `grid` must be resolved (fixed): its origin lies on it.
+  explicit OutputFrame(const Grid& grid);
+  /// The coordinate of units/w on the axis whose origin is originUnits (0: x, 1: y).
+  [[nodiscard]] double coordinate(i128 units, i128 w, int axis) const;
+  /// Both coordinates of an exact point.
+  [[nodiscard]] Point point(const XPoint& p) const {
+    return {coordinate(p.x, p.w, 0), coordinate(p.y, p.w, 1)};
+  }
+
+ private:
+  i128 originUnits_[2] = {0, 0};  ///< origin * scale, exact (|.| <= 2^100)
+  i128 scaleMantissa_ = 1;        ///< scale = scaleMantissa_ * 2^scaleExponent_, mantissa odd
+  int scaleExponent_ = 0;
+};
+
+}  // namespace roiclip::detail
