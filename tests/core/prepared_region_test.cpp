@@ -79,25 +79,40 @@ TEST(PreparedRegion, GivesTheFreeFunctionsResultsOnRandomSubjects) {
 }
 
 TEST(PreparedRegion, ClipsPolygonSetsAndLinesAsTheFreeFunctions) {
+  // PolygonSet subjects have crossings as vertices, which only a fixed grid snaps the same way
+  // in both calls; integer lines agree on the default fitted grid too.
   std::mt19937 rng(5);
+  const Grid fixed = Grid::fixed(256.0);
   const Paths star = {{{0, 100}, {60, -80}, {-90, 30}, {90, 30}, {-60, -80}}};
   for (const Paths& regionPaths : {kQuad, star}) {
-    const PreparedRegion region(regionPaths, FillRule::NonZero);
-    const PolygonSet set = simplify({testing::randomPolygon(rng, 30, 200)}, FillRule::EvenOdd);
+    const PreparedRegion region(regionPaths, FillRule::NonZero, fixed);
+    const PolygonSet set =
+        simplify({testing::randomPolygon(rng, 30, 200)}, FillRule::EvenOdd, fixed);
     for (ClipOp op : kOps) {
-      expectSame(region.clip(op, set), clip(op, set, regionPaths, FillRule::NonZero), "set");
+      expectSame(region.clip(op, set), clip(op, set, regionPaths, FillRule::NonZero, fixed), "set");
     }
+    const PreparedRegion fitted(regionPaths, FillRule::NonZero);
     const Paths lines = {testing::randomPolygon(rng, 20, 200), {{-10, 50}, {210, 60}}};
     for (LinePart part : {LinePart::Inside, LinePart::Outside}) {
-      const Paths got = region.clipLines(lines, part);
+      const Paths got = fitted.clipLines(lines, part);
       EXPECT_EQ(got, clipLines(lines, regionPaths, FillRule::NonZero, part));
       EXPECT_FALSE(got.empty());
     }
   }
-  const PreparedRegion fromSet(simplify(star, FillRule::NonZero));
+  const PreparedRegion fromSet(simplify(star, FillRule::NonZero, fixed), fixed);
   const Paths subject = {testing::randomPolygon(rng, 25, 100)};
   expectSame(fromSet.intersect(subject),
-             intersect(subject, simplify(star, FillRule::NonZero), FillRule::EvenOdd), "from set");
+             intersect(subject, simplify(star, FillRule::NonZero, fixed), FillRule::EvenOdd, fixed),
+             "from set");
+}
+
+// With the default fitted grid the region's grid covers its box grown twice its side on every
+// side; a subject reaching beyond it is clipped by the free function, so nothing is refused.
+TEST(PreparedRegion, FittedGridHandsFarSubjectsToTheFreeFunction) {
+  const PreparedRegion region(kQuad);
+  const Paths far = {{{0, 0}, {4e7, 0}, {4e7, 4e7}, {0, 4e7}}};
+  expectSame(region.intersect(far), intersect(far, kQuad), "far subject");
+  EXPECT_NEAR(region.intersect(far).area(), simplify(kQuad, FillRule::EvenOdd).area(), 1e-6);
 }
 
 TEST(PreparedRegion, AnExceptionLeavesItReusable) {
