@@ -4,6 +4,7 @@
 
 #include <cfloat>
 #include <cmath>
+#include <cstring>
 
 #include <roiclip/error.hpp>
 
@@ -53,6 +54,71 @@ double nearestUnsigned(U n, U d, int exp2) {
   return std::ldexp(double(m), exp2 - sh + drop);
 }
 
+std::uint64_t bitsOf(double v) {
+  std::uint64_t b = 0;
+  std::memcpy(&b, &v, sizeof b);
+  return b;
+}
+double fromBits(std::uint64_t b) {
+  double v = 0;
+  std::memcpy(&v, &b, sizeof v);
+  return v;
+}
+
+// v * 2^e for a positive normal v, by the exponent field (no libm call); false when the result
+// would not be normal.
+bool timesPow2(double v, int e, double& out) {
+  const std::uint64_t b = bitsOf(v);
+  const int field = int(b >> 52) + e;
+  if (field < 1 || field > 2046) return false;
+  out = fromBits((b & ((std::uint64_t{1} << 52) - 1)) | (std::uint64_t(field) << 52));
+  return true;
+}
+
+// The fast path of nearestDouble() for d < 2^64: c, about n / d (within two ulps), is checked by
+// one exact test in 128 bits, (2M - 1) d < 2n 2^-k < (2M + 1) d for c = M 2^k, and moved to its
+// neighbour while the test says so. Returns false where the test does not fit (the caller then
+// divides exactly): a binade's lowest mantissa, shifts beyond 128 bits, a result not normal.
+bool nearestFiltered(u128 n, u128 d, int exp2, double& out) {
+  if ((d >> 64) != 0 || n == 0) return false;
+  const int nb = bitLength(n);
+  // Approximations are enough here: the test below is exact.
+  const double approxN = double(std::uint64_t(n >> 64)) * 0x1p64 + double(std::uint64_t(n));
+  std::uint64_t c = bitsOf(approxN / double(std::uint64_t(d)));  // positive, normal
+  for (int attempt = 0; attempt < 3; ++attempt) {
+    const int field = int(c >> 52);
+    if (field == 0 || field == 2047) return false;
+    const std::uint64_t m = (c & ((std::uint64_t{1} << 52) - 1)) | (std::uint64_t{1} << 52);
+    const int k = field - 1075;                       // the double is m 2^k
+    if (m == (std::uint64_t{1} << 52)) return false;  // the neighbour below is half as far
+    const u128 lo = u128(2 * m - 1) * d, hi = u128(2 * m + 1) * d;  // < 2^118
+    int below = 0, above = 0;  // signs of 2n 2^-k - lo and of 2n 2^-k - hi
+    if (k <= 0) {
+      if (nb + 1 - k > 127) return false;
+      const u128 twice = n << (1 - k);
+      below = (twice > lo) - (twice < lo);
+      above = (twice > hi) - (twice < hi);
+    } else {
+      if (bitLength(hi) + k > 127) return false;
+      const u128 twice = n << 1, l = lo << k, h = hi << k;
+      below = (twice > l) - (twice < l);
+      above = (twice > h) - (twice < h);
+    }
+    if (below < 0) {
+      --c;  // the next double down (the mantissa is above the binade's lowest)
+      continue;
+    }
+    if (above > 0) {
+      ++c;  // the next double up
+      continue;
+    }
+    // On a midpoint: ties to the even mantissa.
+    if ((below == 0 || above == 0) && (m & 1) != 0) c += below == 0 ? -1 : 1;
+    return timesPow2(fromBits(c), exp2, out);
+  }
+  return false;
+}
+
 // Within 128 bits after the shift (the common case) in native integer division.
 bool fits128(int nb, int db) {
   const int sh = 55 - (nb - db);
@@ -66,9 +132,11 @@ double nearestDouble(const i256& num, const i256& den, int exp2) {
   const bool negative = num < 0;
   const u256 n = u256(negative ? i256(-num) : num);
   const u256 d = u256(den);
-  const double v = fits128(bitLength(n), bitLength(d))
-                       ? nearestUnsigned<u128>(toU128(n), toU128(d), exp2)
-                       : nearestUnsigned<u256>(n, d, exp2);
+  double v = 0;
+  if (!(fits128(bitLength(n), bitLength(d)) && nearestFiltered(toU128(n), toU128(d), exp2, v))) {
+    v = fits128(bitLength(n), bitLength(d)) ? nearestUnsigned<u128>(toU128(n), toU128(d), exp2)
+                                            : nearestUnsigned<u256>(n, d, exp2);
+  }
   return negative ? -v : v;
 }
 
@@ -101,9 +169,11 @@ double OutputFrame::coordinate(i128 units, i128 w, int axis) const {
     // A grid point on a power-of-two grid: one exact conversion when it fits 53 bits.
     const i128 n = units + o;
     constexpr i128 kExact = i128(1) << 53;
-    if (n > -kExact && n < kExact) {
-      const double v = std::ldexp(double(n), -scaleExponent_);
-      if (n == 0 || std::fabs(v) >= DBL_MIN) return v;
+    if (n == 0) return 0.0;
+    double v = 0;
+    if (n > -kExact && n < kExact &&
+        timesPow2(std::fabs(double(std::int64_t(n))), -scaleExponent_, v)) {
+      return n < 0 ? -v : v;
     }
   }
   // (units / w + o) / (m * 2^e) = (units + o * w) / (w * m) * 2^-e
@@ -113,8 +183,10 @@ double OutputFrame::coordinate(i128 units, i128 w, int axis) const {
       n < (i128(1) << 126)) {
     if (n == 0) return 0.0;
     const u128 un = n < 0 ? u128(-n) : u128(n);
+    double v = 0;
+    if (nearestFiltered(un, u128(d), -scaleExponent_, v)) return n < 0 ? -v : v;
     if (fits128(bitLength(un), bitLength(u128(d)))) {
-      const double v = nearestUnsigned<u128>(un, u128(d), -scaleExponent_);
+      v = nearestUnsigned<u128>(un, u128(d), -scaleExponent_);
       return n < 0 ? -v : v;
     }
   }

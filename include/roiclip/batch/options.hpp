@@ -46,10 +46,12 @@ struct RunOptions {
   ContourOptions contours;  ///< how contours are found (method, polarity, minimum area, ...)
   FillRule subjectFillRule = FillRule::EvenOdd;  ///< for the contours (as cv::fillPoly draws)
   FillRule roiFillRule = FillRule::EvenOdd;      ///< for the ROI paths
-  /// The core's coordinate grid for every clip of the image: fixed at 1/256 px, so that every
-  /// clip of a run snaps alike and matches the 1/256 px masks of the mask check
-  /// (opencv::kRasterGrid); pixel contours are exact on it.
-  Grid grid = Grid::fixed(256.0);
+  /// The core's coordinate grid for every clip of the image: the library's default, fitted to
+  /// each call (pixel contours are exact on it, tag corners move by ~2^-31 of the extent), so
+  /// that code calling the library with its defaults gets the areas `roiclip run` reports. The
+  /// mask check rasterises at opencv::kRasterGrid (1/256 px) whatever this is, and compares off
+  /// a boundary band; a fixed grid (Grid::fixed()) gives identical snapping across calls.
+  Grid grid{};
   /// The work budget of each clip of the image (the clips run one after another, so this bounds
   /// the memory of the image): 25,000,000 crossings by default (--max-crossings); an image over it
   /// fails with its reason. Not part of optionsKey(), like maxPixels.

@@ -121,6 +121,14 @@ TEST(StageOutput, NearestDoubleRoundsHalfToEvenAndHandlesSubnormals) {
   // 2^53 + 1 is a tie between 2^53 and 2^53 + 2: to even (2^53); 2^53 + 3 goes up to 2^53 + 4.
   EXPECT_EQ(detail::nearestDouble(i256(1) << 53 | 1, 1, 0), 0x1p53);
   EXPECT_EQ(detail::nearestDouble((i256(1) << 53) + 3, 1, 0), 0x1p53 + 4);
+  // Ties inside a binade (the filtered path): 3 * 2^52 + 1 lies halfway between 3 * 2^52 (even
+  // mantissa) and 3 * 2^52 + 2; 3 * 2^52 + 3 between + 2 (odd) and + 4 (even). Also as n / 5.
+  const i256 three = i256(3) << 52;
+  EXPECT_EQ(detail::nearestDouble(three + 1, 1, 0), 0x1.8p53);
+  EXPECT_EQ(detail::nearestDouble(three + 3, 1, 0), 0x1.8p53 + 4);
+  EXPECT_EQ(detail::nearestDouble((three + 1) * 5, 5, 0), 0x1.8p53);
+  EXPECT_EQ(detail::nearestDouble(-(three + 3) * 5, 5, -3), -(0x1.8p53 + 4) / 8);
+  EXPECT_EQ(detail::nearestDouble((three + 2) * 7 + 3, 7, 0), 0x1.8p53 + 2);
   // 1/3 and -2/3 as their nearest doubles.
   EXPECT_EQ(detail::nearestDouble(1, 3, 0), 1.0 / 3.0);
   EXPECT_EQ(detail::nearestDouble(-2, 3, 0), -2.0 / 3.0);
