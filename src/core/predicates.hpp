@@ -105,12 +105,22 @@ inline int orient(IPoint a, IPoint b, const XPoint& c) {
   return (lw > rw) - (lw < rw);
 }
 
-// da, db: the cached doubles of a / aw and b / bw (relative error below 2^-51).
-inline int compareCoordFiltered(i128 a, i128 aw, double da, i128 b, i128 bw, double db) {
+/// The order of two exact coordinates a, b from their cached doubles da, db: -1 or +1 when the
+/// doubles decide it, 0 when only the exact values can. Each cached double is within 2^-51 of
+/// its exact value relative (X / W: three roundings of 2^-53), so |(a - b) - (da - db)| <=
+/// 2^-51 (|da| + |db|) (1 + 2^-50), and the rounded difference is off by another 2^-53 of itself:
+/// a difference beyond 1e-14 (|da| + |db|) (about 45x that) has the sign of a - b.
+inline int compareCached(double da, double db) {
   const double bound = 1e-14 * (std::fabs(da) + std::fabs(db));
   if (da - db > bound) return 1;
   if (db - da > bound) return -1;
-  return compareCoord(a, aw, b, bw);
+  return 0;
+}
+
+// da, db: the cached doubles of a / aw and b / bw (relative error below 2^-51).
+inline int compareCoordFiltered(i128 a, i128 aw, double da, i128 b, i128 bw, double db) {
+  const int c = compareCached(da, db);
+  return c != 0 ? c : compareCoord(a, aw, b, bw);
 }
 
 inline int compare(const XPoint& a, const XPoint& b) {

@@ -23,9 +23,16 @@
 namespace roiclip::detail {
 namespace {
 
-// Earliest point first in the event heap (std::push_heap keeps the largest on top).
+// Earliest point first in the event heap (std::push_heap keeps the largest on top). The events'
+// cached x decides most comparisons; the rest compare the exact points in the pool.
 struct EventAfter {
-  bool operator()(const SweepEvent& a, const SweepEvent& b) const { return less(b.point, a.point); }
+  const std::vector<XPoint>* points;
+  bool operator()(const SweepEvent& a, const SweepEvent& b) const {
+    const int c = compareCached(a.fx, b.fx);
+    if (c != 0) return c > 0;
+    return a.point != b.point &&
+           less((*points)[std::size_t(b.point)], (*points)[std::size_t(a.point)]);
+  }
 };
 
 // q == p for a grid point q: grid points always have W == 1 (lineIntersection() stores
@@ -40,6 +47,8 @@ class Sweep {
         pieces_(ws.pieces),
         starts_(ws.starts),
         queue_(ws.queue),
+        eventPoints_(ws.eventPoints),
+        freeEventPoints_(ws.freeEventPoints),
         starting_(ws.starting),
         through_(ws.through),
         nodes_(ws.nodes),
@@ -51,6 +60,8 @@ class Sweep {
     pieces_.reserve(total);
     starts_.clear();
     queue_.clear();
+    eventPoints_.clear();
+    freeEventPoints_.clear();
     nodes_.clear();
     freeNodes_.clear();
     starts_.reserve(edges.size() * 2);
@@ -78,12 +89,12 @@ class Sweep {
       if (e.left.w == 1) {
         starts_.push_back({{std::int64_t(e.left.x), std::int64_t(e.left.y)}, id, false});
       } else {
-        push({e.left, id});
+        push(e.left, id);
       }
       if (e.right.w == 1) {
         starts_.push_back({{std::int64_t(e.right.x), std::int64_t(e.right.y)}, id, true});
       } else {
-        push({e.right, -1});
+        push(e.right, -1);
       }
       pieces_.push_back(a);
     }
@@ -151,26 +162,40 @@ class Sweep {
   SweepPiece& piece(Node it) { return pieces_[std::size_t(it->piece)]; }
   static int nodeIndex(Node it) { return it->self; }
 
-  void push(const SweepEvent& e) {
-    queue_.push_back(e);
-    std::push_heap(queue_.begin(), queue_.end(), EventAfter{});
+  // x must not lie in eventPoints_ (it may move).
+  void push(const XPoint& x, int pieceId, int through = -1) {
+    int slot;
+    if (!freeEventPoints_.empty()) {
+      slot = freeEventPoints_.back();
+      freeEventPoints_.pop_back();
+      eventPoints_[std::size_t(slot)] = x;
+    } else {
+      slot = int(eventPoints_.size());
+      eventPoints_.push_back(x);
+    }
+    queue_.push_back({x.fx, x.fy, slot, pieceId, through});
+    std::push_heap(queue_.begin(), queue_.end(), EventAfter{&eventPoints_});
   }
   void pop() {
-    std::pop_heap(queue_.begin(), queue_.end(), EventAfter{});
+    std::pop_heap(queue_.begin(), queue_.end(), EventAfter{&eventPoints_});
+    freeEventPoints_.push_back(queue_.back().point);
     queue_.pop_back();
   }
   [[nodiscard]] const SweepEvent& top() const { return queue_.front(); }
+  [[nodiscard]] const XPoint& topPoint() const {
+    return eventPoints_[std::size_t(queue_.front().point)];
+  }
 
   bool nextPoint(XPoint& p) const {
     const bool hasStart = cursor_ < starts_.size();
     if (!hasStart && queue_.empty()) return false;
     if (!hasStart) {
-      p = top().point;
+      p = topPoint();
     } else if (queue_.empty()) {
       p = XPoint(starts_[cursor_].point);
     } else {
       const XPoint a(starts_[cursor_].point);
-      p = less(top().point, a) ? top().point : a;
+      p = less(topPoint(), a) ? topPoint() : a;
     }
     return true;
   }
@@ -218,7 +243,7 @@ class Sweep {
       }
       ++cursor_;
     }
-    while (!queue_.empty() && equal(top().point, p)) {
+    while (!queue_.empty() && equal(topPoint(), p)) {
       const SweepEvent& ev = top();
       if (ev.piece >= 0) starting_.push_back(ev.piece);
       // A piece still in the status whose line passes through p goes through p (it started
@@ -365,7 +390,7 @@ class Sweep {
         for (int k = 0; k < kOperands; ++k) pieces_[first].contribution[k] += other.contribution[k];
         if (!equal(other.right, pieces_[first].right)) {
           other.left = pieces_[first].right;
-          push({other.left, starting_[j]});
+          push(other.left, starting_[j]);
         }
         ++j;
       }
@@ -407,7 +432,7 @@ class Sweep {
   }
 
   // The one place a new crossing becomes an event.
-  void queueCrossing(const XPoint& x, int piece) { push({x, -1, piece}); }
+  void queueCrossing(const XPoint& x, int piece) { push(x, -1, piece); }
 
   const BooleanSpec& spec_;
   int vertex_ = -1;
@@ -415,6 +440,8 @@ class Sweep {
   std::vector<SweepStart>& starts_;
   std::size_t cursor_ = 0;
   std::vector<SweepEvent>& queue_;
+  std::vector<XPoint>& eventPoints_;
+  std::vector<int>& freeEventPoints_;
   std::vector<int>& starting_;
   std::vector<int>& through_;
   std::deque<StatusNode>& nodes_;

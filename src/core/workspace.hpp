@@ -69,11 +69,14 @@ struct SweepStart {
 };
 
 /// A point the sweep must visit that is not an input vertex: a crossing, an off-grid end, or
-/// where a merged coincident piece goes on.
+/// where a merged coincident piece goes on. 32 bytes: the exact point lives in the event point
+/// pool (Workspace::eventPoints); the heap orders events by the cached doubles first and reads
+/// the pool only when they cannot decide.
 struct SweepEvent {
-  XPoint point;
-  int piece = -1;    ///< -1: visit the point only
-  int through = -1;  ///< a crossing: one of the two pieces crossing there (locates p)
+  double fx = 0, fy = 0;  ///< the point's cached doubles (XPoint::fx, fy)
+  int point = -1;         ///< its index in Workspace::eventPoints
+  int piece = -1;         ///< -1: visit the point only
+  int through = -1;       ///< a crossing: one of the two pieces crossing there (locates p)
 };
 
 /// A vertex of a path being pre-clipped and the supporting segment of the edge leaving it
@@ -88,7 +91,9 @@ struct Workspace {
   // Sweep (split_edges.cpp).
   std::vector<SweepPiece> pieces;
   std::vector<SweepStart> starts;
-  std::vector<SweepEvent> queue;  ///< a binary heap, earliest point first
+  std::vector<SweepEvent> queue;     ///< a binary heap, earliest point first
+  std::vector<XPoint> eventPoints;   ///< the exact points of queued events (slots are reused)
+  std::vector<int> freeEventPoints;  ///< free slots of eventPoints
   /// Status node pool, as many as the status was ever wide (a deque: nodes never move).
   std::deque<StatusNode> nodes;
   std::vector<int> freeNodes;
