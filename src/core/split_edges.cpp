@@ -24,11 +24,12 @@ namespace roiclip::detail {
 namespace {
 
 // Earliest point first in the event heap (std::push_heap keeps the largest on top). The events'
-// cached x decides most comparisons; the rest compare the exact points in the pool.
+// cached x decides most comparisons (every sweep point lies within the grid's range, see
+// compareCachedInBox()); the rest compare the exact points in the pool.
 struct EventAfter {
   const std::vector<XPoint>* points;
   bool operator()(const SweepEvent& a, const SweepEvent& b) const {
-    const int c = compareCached(a.fx, b.fx);
+    const int c = compareCachedInBox(a.fx, b.fx);
     if (c != 0) return c > 0;
     return a.point != b.point &&
            less((*points)[std::size_t(b.point)], (*points)[std::size_t(a.point)]);
