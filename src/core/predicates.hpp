@@ -180,7 +180,11 @@ inline bool lineIntersection(IPoint a, IPoint b, IPoint c, IPoint d, XPoint& out
     out = XPoint(IPoint{std::int64_t(rx), std::int64_t(ry)});
     return true;
   }
-  out = XPoint(x, y, den);
+  out.x = x;  // XPoint(x, y, den) without converting x, y and den to double again
+  out.y = y;
+  out.w = den;
+  out.fx = fx;
+  out.fy = fy;
   return true;
 }
 
