@@ -26,13 +26,24 @@ namespace {
 // Earliest point first in the event heap (std::push_heap keeps the largest on top). The events'
 // cached x decides most comparisons (every sweep point lies within the grid's range, see
 // compareCachedInBox()); the rest compare the exact points in the pool.
+// The exact point of an event: its coordinates from the pool, its cached doubles.
+inline XPoint eventPoint(const SweepEvent& e, const std::vector<ExactCoords>& points) {
+  const ExactCoords& c = points[std::size_t(e.point)];
+  XPoint p;
+  p.x = c.x;
+  p.y = c.y;
+  p.w = c.w;
+  p.fx = e.fx;
+  p.fy = e.fy;
+  return p;
+}
+
 struct EventAfter {
-  const std::vector<XPoint>* points;
+  const std::vector<ExactCoords>* points;
   bool operator()(const SweepEvent& a, const SweepEvent& b) const {
     const int c = compareCachedInBox(a.fx, b.fx);
     if (c != 0) return c > 0;
-    return a.point != b.point &&
-           less((*points)[std::size_t(b.point)], (*points)[std::size_t(a.point)]);
+    return a.point != b.point && less(eventPoint(b, *points), eventPoint(a, *points));
   }
 };
 
@@ -169,10 +180,10 @@ class Sweep {
     if (!freeEventPoints_.empty()) {
       slot = freeEventPoints_.back();
       freeEventPoints_.pop_back();
-      eventPoints_[std::size_t(slot)] = x;
+      eventPoints_[std::size_t(slot)] = {x.x, x.y, x.w};
     } else {
       slot = int(eventPoints_.size());
-      eventPoints_.push_back(x);
+      eventPoints_.push_back({x.x, x.y, x.w});
     }
     queue_.push_back({x.fx, x.fy, slot, pieceId, through});
     std::push_heap(queue_.begin(), queue_.end(), EventAfter{&eventPoints_});
@@ -183,8 +194,10 @@ class Sweep {
     queue_.pop_back();
   }
   [[nodiscard]] const SweepEvent& top() const { return queue_.front(); }
-  [[nodiscard]] const XPoint& topPoint() const {
-    return eventPoints_[std::size_t(queue_.front().point)];
+  [[nodiscard]] XPoint topPoint() const { return eventPoint(queue_.front(), eventPoints_); }
+  // The earliest event is at p (which lies within the grid's range, as every sweep point).
+  [[nodiscard]] bool topAt(const XPoint& p) const {
+    return compareCachedInBox(top().fx, p.fx) == 0 && equal(topPoint(), p);
   }
 
   bool nextPoint(XPoint& p) const {
@@ -196,7 +209,8 @@ class Sweep {
       p = XPoint(starts_[cursor_].point);
     } else {
       const XPoint a(starts_[cursor_].point);
-      p = less(topPoint(), a) ? topPoint() : a;
+      const XPoint t = topPoint();
+      p = less(t, a) ? t : a;
     }
     return true;
   }
@@ -244,7 +258,7 @@ class Sweep {
       }
       ++cursor_;
     }
-    while (!queue_.empty() && equal(topPoint(), p)) {
+    while (!queue_.empty() && topAt(p)) {
       const SweepEvent& ev = top();
       if (ev.piece >= 0) starting_.push_back(ev.piece);
       // A piece still in the status whose line passes through p goes through p (it started
@@ -441,7 +455,7 @@ class Sweep {
   std::vector<SweepStart>& starts_;
   std::size_t cursor_ = 0;
   std::vector<SweepEvent>& queue_;
-  std::vector<XPoint>& eventPoints_;
+  std::vector<ExactCoords>& eventPoints_;
   std::vector<int>& freeEventPoints_;
   std::vector<int>& starting_;
   std::vector<int>& through_;

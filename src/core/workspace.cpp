@@ -36,7 +36,7 @@ void Workspace::release() {
   std::vector<SweepPiece>().swap(pieces);
   std::vector<SweepStart>().swap(starts);
   std::vector<SweepEvent>().swap(queue);
-  std::vector<XPoint>().swap(eventPoints);
+  std::vector<ExactCoords>().swap(eventPoints);
   std::vector<int>().swap(freeEventPoints);
   std::deque<StatusNode>().swap(nodes);
   std::vector<int>().swap(freeNodes);

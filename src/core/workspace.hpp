@@ -68,10 +68,15 @@ struct SweepStart {
   bool end;  ///< the right end of `piece` (a hint: the piece may have been merged away)
 };
 
+/// The exact coordinates of an XPoint without its cached doubles (an event keeps those).
+struct ExactCoords {
+  i128 x, y, w;
+};
+
 /// A point the sweep must visit that is not an input vertex: a crossing, an off-grid end, or
-/// where a merged coincident piece goes on. 32 bytes: the exact point lives in the event point
-/// pool (Workspace::eventPoints); the heap orders events by the cached doubles first and reads
-/// the pool only when they cannot decide.
+/// where a merged coincident piece goes on. 32 bytes: the exact coordinates live in the event
+/// point pool (Workspace::eventPoints, 48 bytes a slot); the heap orders events by the cached
+/// doubles first and reads the pool only when they cannot decide.
 struct SweepEvent {
   double fx = 0, fy = 0;  ///< the point's cached doubles (XPoint::fx, fy)
   int point = -1;         ///< its index in Workspace::eventPoints
@@ -91,9 +96,9 @@ struct Workspace {
   // Sweep (split_edges.cpp).
   std::vector<SweepPiece> pieces;
   std::vector<SweepStart> starts;
-  std::vector<SweepEvent> queue;     ///< a binary heap, earliest point first
-  std::vector<XPoint> eventPoints;   ///< the exact points of queued events (slots are reused)
-  std::vector<int> freeEventPoints;  ///< free slots of eventPoints
+  std::vector<SweepEvent> queue;         ///< a binary heap, earliest point first
+  std::vector<ExactCoords> eventPoints;  ///< exact points of queued events (slots are reused)
+  std::vector<int> freeEventPoints;      ///< free slots of eventPoints
   /// Status node pool, as many as the status was ever wide (a deque: nodes never move).
   std::deque<StatusNode> nodes;
   std::vector<int> freeNodes;
