@@ -175,7 +175,7 @@ class Sweep {
   static int nodeIndex(Node it) { return it->self; }
 
   // x must not lie in eventPoints_ (it may move).
-  void push(const XPoint& x, int pieceId, int through = -1) {
+  void push(const XPoint& x, int pieceId, int through = -1, int other = -1) {
     int slot;
     if (!freeEventPoints_.empty()) {
       slot = freeEventPoints_.back();
@@ -185,7 +185,7 @@ class Sweep {
       slot = int(eventPoints_.size());
       eventPoints_.push_back({x.x, x.y, x.w});
     }
-    queue_.push_back({x.fx, x.fy, slot, pieceId, through});
+    queue_.push_back({x.fx, x.fy, slot, pieceId, through, other});
     std::push_heap(queue_.begin(), queue_.end(), EventAfter{&eventPoints_});
   }
   void pop() {
@@ -230,8 +230,8 @@ class Sweep {
   void visit(const XPoint& p) {
     vertex_ = -1;
     starting_.clear();
-    const int locator = takeEventsAt(p);
-    const auto [lo, hi] = piecesThrough(p, locator);
+    const auto [locator, known] = takeEventsAt(p);
+    const auto [lo, hi] = piecesThrough(p, locator, known);
     const int below = lo == status_.begin() ? -1 : std::prev(lo)->piece;
     cutAt(lo, hi, p);
     mergeCoincident();
@@ -246,9 +246,10 @@ class Sweep {
   }
 
   // Takes every start and queued event at p: pieces starting at p go to starting_. Returns a
-  // piece known to pass through p, if any (its status node locates p without a search), else -1.
-  int takeEventsAt(const XPoint& p) {
-    int locator = -1;
+  // piece known to pass through p, if any (its status node locates p without a search), else -1,
+  // and another one known to pass through p (no orientation test needed for it), else -1.
+  std::pair<int, int> takeEventsAt(const XPoint& p) {
+    int locator = -1, known = -1;
     while (cursor_ < starts_.size() && atGridPoint(p, starts_[cursor_].point)) {
       const SweepStart& ev = starts_[cursor_];
       if (!ev.end) {
@@ -261,20 +262,25 @@ class Sweep {
     while (!queue_.empty() && topAt(p)) {
       const SweepEvent& ev = top();
       if (ev.piece >= 0) starting_.push_back(ev.piece);
-      // A piece still in the status whose line passes through p goes through p (it started
-      // before p and ends at or after it).
-      if (locator < 0 && ev.through >= 0 && pieces_[ev.through].node >= 0 &&
-          orient(pieces_[ev.through].lineA, pieces_[ev.through].lineB, p) == 0) {
-        locator = ev.through;
+      // A crossing lies exactly on the lines of both its pieces, and a piece still in the
+      // status started before p and ends at or after it (its right end is an event): so each
+      // of the two still in the status passes through p, without an orientation test.
+      if (ev.through >= 0 && locator < 0) {
+        const bool a = pieces_[ev.through].node >= 0, b = pieces_[ev.other].node >= 0;
+        if (a || b) {
+          locator = a ? ev.through : ev.other;
+          known = a && b ? ev.other : -1;
+        }
       }
       pop();
     }
-    return locator;
+    return {locator, known};
   }
 
   // The pieces through p are contiguous in the status: [lo, hi).
-  std::pair<Node, Node> piecesThrough(const XPoint& p, int locator) {
+  std::pair<Node, Node> piecesThrough(const XPoint& p, int locator, int known) {
     const auto passes = [&](Node it) {
+      if (it->piece == known) return true;
       const SweepPiece& a = piece(it);
       return orient(a.lineA, a.lineB, p) == 0;
     };
@@ -443,11 +449,11 @@ class Sweep {
     const int cb = compare(x, pb.right);
     if (ca > 0 || cb > 0) return;
     if (ca == 0 || cb == 0) return;  // already an event: the end of one of them
-    queueCrossing(x, a);
+    queueCrossing(x, a, b);
   }
 
-  // The one place a new crossing becomes an event.
-  void queueCrossing(const XPoint& x, int piece) { push(x, -1, piece); }
+  // The one place a new crossing becomes an event: x, where pieces a and b cross.
+  void queueCrossing(const XPoint& x, int a, int b) { push(x, -1, a, b); }
 
   const BooleanSpec& spec_;
   int vertex_ = -1;

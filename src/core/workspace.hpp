@@ -82,7 +82,9 @@ struct SweepEvent {
   int point = -1;         ///< its index in Workspace::eventPoints
   int piece = -1;         ///< -1: visit the point only
   int through = -1;       ///< a crossing: one of the two pieces crossing there (locates p)
+  int other = -1;         ///< a crossing: the other piece
 };
+static_assert(sizeof(SweepEvent) == 32, "the event heap moves these around: keep them small");
 
 /// A vertex of a path being pre-clipped and the supporting segment of the edge leaving it
 /// (convex_clip.cpp).
