@@ -21,6 +21,7 @@
 #include <boost/multiprecision/cpp_int.hpp>
 
 #include <roiclip/error.hpp>
+#include <roiclip/geometry.hpp>
 
 namespace roiclip::detail {
 
@@ -105,16 +106,42 @@ inline int orient(IPoint a, IPoint b, const XPoint& c) {
   return (lw > rw) - (lw < rw);
 }
 
-// da, db: the cached doubles of a / aw and b / bw (relative error below 2^-51).
-inline int compareCoordFiltered(i128 a, i128 aw, double da, i128 b, i128 bw, double db) {
+/// The order of two exact coordinates a, b from their cached doubles da, db: -1 or +1 when the
+/// doubles decide it, 0 when only the exact values can. Each cached double is within 2^-51 of
+/// its exact value relative (X / W: three roundings of 2^-53), so |(a - b) - (da - db)| <=
+/// 2^-51 (|da| + |db|) (1 + 2^-50), and the rounded difference is off by another 2^-53 of itself:
+/// a difference beyond 1e-14 (|da| + |db|) (about 45x that) has the sign of a - b.
+inline int compareCached(double da, double db) {
   const double bound = 1e-14 * (std::fabs(da) + std::fabs(db));
   if (da - db > bound) return 1;
   if (db - da > bound) return -1;
-  return compareCoord(a, aw, b, bw);
+  return 0;
+}
+
+/// compareCached() for coordinates known to lie within the grid's range, |a|, |b| <=
+/// Grid::kMaxUnits = 2^30, as every point of the sweep does (input points, and crossings of
+/// segments between them): a static bound, two subtractions and two comparisons. Each cached
+/// double is then within 2^-51 * 2^30 = 2^-21 of its exact value, so |(a - b) - (da - db)| <=
+/// 2^-20, and a rounded difference beyond 2^-18 (also rounded by at most 2^-53 of itself) has
+/// the sign of a - b.
+inline int compareCachedInBox(double da, double db) {
+  static_assert(Grid::kMaxUnits <= (std::int64_t{1} << 30), "the bound below assumes 2^30");
+  constexpr double kBound = 0x1p-18;
+  if (da - db > kBound) return 1;
+  if (db - da > kBound) return -1;
+  return 0;
+}
+
+// da, db: the cached doubles of a / aw and b / bw (relative error below 2^-51).
+inline int compareCoordFiltered(i128 a, i128 aw, double da, i128 b, i128 bw, double db) {
+  const int c = compareCached(da, db);
+  return c != 0 ? c : compareCoord(a, aw, b, bw);
 }
 
 inline int compare(const XPoint& a, const XPoint& b) {
-  if (a.w == 1 && b.w == 1) {  // both on the grid: the common case
+  // Same denominator (both on the grid, the common case, or copies of one crossing): the
+  // numerators decide, W > 0.
+  if (a.w == b.w) {
     if (a.x != b.x) return a.x < b.x ? -1 : 1;
     return (a.y > b.y) - (a.y < b.y);
   }
@@ -153,7 +180,11 @@ inline bool lineIntersection(IPoint a, IPoint b, IPoint c, IPoint d, XPoint& out
     out = XPoint(IPoint{std::int64_t(rx), std::int64_t(ry)});
     return true;
   }
-  out = XPoint(x, y, den);
+  out.x = x;  // XPoint(x, y, den) without converting x, y and den to double again
+  out.y = y;
+  out.w = den;
+  out.fx = fx;
+  out.fy = fy;
   return true;
 }
 

@@ -23,9 +23,28 @@
 namespace roiclip::detail {
 namespace {
 
-// Earliest point first in the event heap (std::push_heap keeps the largest on top).
+// Earliest point first in the event heap (std::push_heap keeps the largest on top). The events'
+// cached x decides most comparisons (every sweep point lies within the grid's range, see
+// compareCachedInBox()); the rest compare the exact points in the pool.
+// The exact point of an event: its coordinates from the pool, its cached doubles.
+inline XPoint eventPoint(const SweepEvent& e, const std::vector<ExactCoords>& points) {
+  const ExactCoords& c = points[std::size_t(e.point)];
+  XPoint p;
+  p.x = c.x;
+  p.y = c.y;
+  p.w = c.w;
+  p.fx = e.fx;
+  p.fy = e.fy;
+  return p;
+}
+
 struct EventAfter {
-  bool operator()(const SweepEvent& a, const SweepEvent& b) const { return less(b.point, a.point); }
+  const std::vector<ExactCoords>* points;
+  bool operator()(const SweepEvent& a, const SweepEvent& b) const {
+    const int c = compareCachedInBox(a.fx, b.fx);
+    if (c != 0) return c > 0;
+    return a.point != b.point && less(eventPoint(b, *points), eventPoint(a, *points));
+  }
 };
 
 // q == p for a grid point q: grid points always have W == 1 (lineIntersection() stores
@@ -40,6 +59,8 @@ class Sweep {
         pieces_(ws.pieces),
         starts_(ws.starts),
         queue_(ws.queue),
+        eventPoints_(ws.eventPoints),
+        freeEventPoints_(ws.freeEventPoints),
         starting_(ws.starting),
         through_(ws.through),
         nodes_(ws.nodes),
@@ -51,6 +72,8 @@ class Sweep {
     pieces_.reserve(total);
     starts_.clear();
     queue_.clear();
+    eventPoints_.clear();
+    freeEventPoints_.clear();
     nodes_.clear();
     freeNodes_.clear();
     starts_.reserve(edges.size() * 2);
@@ -78,12 +101,12 @@ class Sweep {
       if (e.left.w == 1) {
         starts_.push_back({{std::int64_t(e.left.x), std::int64_t(e.left.y)}, id, false});
       } else {
-        push({e.left, id});
+        push(e.left, id);
       }
       if (e.right.w == 1) {
         starts_.push_back({{std::int64_t(e.right.x), std::int64_t(e.right.y)}, id, true});
       } else {
-        push({e.right, -1});
+        push(e.right, -1);
       }
       pieces_.push_back(a);
     }
@@ -151,26 +174,43 @@ class Sweep {
   SweepPiece& piece(Node it) { return pieces_[std::size_t(it->piece)]; }
   static int nodeIndex(Node it) { return it->self; }
 
-  void push(const SweepEvent& e) {
-    queue_.push_back(e);
-    std::push_heap(queue_.begin(), queue_.end(), EventAfter{});
+  // x must not lie in eventPoints_ (it may move).
+  void push(const XPoint& x, int pieceId, int through = -1, int other = -1) {
+    int slot;
+    if (!freeEventPoints_.empty()) {
+      slot = freeEventPoints_.back();
+      freeEventPoints_.pop_back();
+      eventPoints_[std::size_t(slot)] = {x.x, x.y, x.w};
+    } else {
+      slot = int(eventPoints_.size());
+      eventPoints_.push_back({x.x, x.y, x.w});
+    }
+    queue_.push_back({x.fx, x.fy, slot, pieceId, through, other});
+    std::push_heap(queue_.begin(), queue_.end(), EventAfter{&eventPoints_});
   }
   void pop() {
-    std::pop_heap(queue_.begin(), queue_.end(), EventAfter{});
+    std::pop_heap(queue_.begin(), queue_.end(), EventAfter{&eventPoints_});
+    freeEventPoints_.push_back(queue_.back().point);
     queue_.pop_back();
   }
   [[nodiscard]] const SweepEvent& top() const { return queue_.front(); }
+  [[nodiscard]] XPoint topPoint() const { return eventPoint(queue_.front(), eventPoints_); }
+  // The earliest event is at p (which lies within the grid's range, as every sweep point).
+  [[nodiscard]] bool topAt(const XPoint& p) const {
+    return compareCachedInBox(top().fx, p.fx) == 0 && equal(topPoint(), p);
+  }
 
   bool nextPoint(XPoint& p) const {
     const bool hasStart = cursor_ < starts_.size();
     if (!hasStart && queue_.empty()) return false;
     if (!hasStart) {
-      p = top().point;
+      p = topPoint();
     } else if (queue_.empty()) {
       p = XPoint(starts_[cursor_].point);
     } else {
       const XPoint a(starts_[cursor_].point);
-      p = less(top().point, a) ? top().point : a;
+      const XPoint t = topPoint();
+      p = less(t, a) ? t : a;
     }
     return true;
   }
@@ -190,8 +230,8 @@ class Sweep {
   void visit(const XPoint& p) {
     vertex_ = -1;
     starting_.clear();
-    const int locator = takeEventsAt(p);
-    const auto [lo, hi] = piecesThrough(p, locator);
+    const auto [locator, known] = takeEventsAt(p);
+    const auto [lo, hi] = piecesThrough(p, locator, known);
     const int below = lo == status_.begin() ? -1 : std::prev(lo)->piece;
     cutAt(lo, hi, p);
     mergeCoincident();
@@ -206,9 +246,10 @@ class Sweep {
   }
 
   // Takes every start and queued event at p: pieces starting at p go to starting_. Returns a
-  // piece known to pass through p, if any (its status node locates p without a search), else -1.
-  int takeEventsAt(const XPoint& p) {
-    int locator = -1;
+  // piece known to pass through p, if any (its status node locates p without a search), else -1,
+  // and another one known to pass through p (no orientation test needed for it), else -1.
+  std::pair<int, int> takeEventsAt(const XPoint& p) {
+    int locator = -1, known = -1;
     while (cursor_ < starts_.size() && atGridPoint(p, starts_[cursor_].point)) {
       const SweepStart& ev = starts_[cursor_];
       if (!ev.end) {
@@ -218,23 +259,28 @@ class Sweep {
       }
       ++cursor_;
     }
-    while (!queue_.empty() && equal(top().point, p)) {
+    while (!queue_.empty() && topAt(p)) {
       const SweepEvent& ev = top();
       if (ev.piece >= 0) starting_.push_back(ev.piece);
-      // A piece still in the status whose line passes through p goes through p (it started
-      // before p and ends at or after it).
-      if (locator < 0 && ev.through >= 0 && pieces_[ev.through].node >= 0 &&
-          orient(pieces_[ev.through].lineA, pieces_[ev.through].lineB, p) == 0) {
-        locator = ev.through;
+      // A crossing lies exactly on the lines of both its pieces, and a piece still in the
+      // status started before p and ends at or after it (its right end is an event): so each
+      // of the two still in the status passes through p, without an orientation test.
+      if (ev.through >= 0 && locator < 0) {
+        const bool a = pieces_[ev.through].node >= 0, b = pieces_[ev.other].node >= 0;
+        if (a || b) {
+          locator = a ? ev.through : ev.other;
+          known = a && b ? ev.other : -1;
+        }
       }
       pop();
     }
-    return locator;
+    return {locator, known};
   }
 
   // The pieces through p are contiguous in the status: [lo, hi).
-  std::pair<Node, Node> piecesThrough(const XPoint& p, int locator) {
+  std::pair<Node, Node> piecesThrough(const XPoint& p, int locator, int known) {
     const auto passes = [&](Node it) {
+      if (it->piece == known) return true;
       const SweepPiece& a = piece(it);
       return orient(a.lineA, a.lineB, p) == 0;
     };
@@ -365,7 +411,7 @@ class Sweep {
         for (int k = 0; k < kOperands; ++k) pieces_[first].contribution[k] += other.contribution[k];
         if (!equal(other.right, pieces_[first].right)) {
           other.left = pieces_[first].right;
-          push({other.left, starting_[j]});
+          push(other.left, starting_[j]);
         }
         ++j;
       }
@@ -403,16 +449,16 @@ class Sweep {
     const int cb = compare(x, pb.right);
     if (ca > 0 || cb > 0) return;
     if (ca == 0 || cb == 0) return;  // already an event: the end of one of them
-    queueCrossing(x, a);
+    queueCrossing(x, a, b);
   }
 
-  // The one place a new crossing becomes an event, after the work budget
-  // (Limits::maxCrossings) is checked, before the event takes memory.
-  void queueCrossing(const XPoint& x, int piece) {
+  // The one place a new crossing becomes an event: x, where pieces a and b cross; after the
+  // work budget (Limits::maxCrossings) is checked, before the event takes memory.
+  void queueCrossing(const XPoint& x, int a, int b) {
     if (++crossings_ > spec_.maxCrossings) {
       throw ResourceLimitError("maxCrossings", spec_.maxCrossings, "crossings");
     }
-    push({x, -1, piece});
+    push(x, -1, a, b);
   }
 
   const BooleanSpec& spec_;
@@ -422,6 +468,8 @@ class Sweep {
   std::vector<SweepStart>& starts_;
   std::size_t cursor_ = 0;
   std::vector<SweepEvent>& queue_;
+  std::vector<ExactCoords>& eventPoints_;
+  std::vector<int>& freeEventPoints_;
   std::vector<int>& starting_;
   std::vector<int>& through_;
   std::deque<StatusNode>& nodes_;

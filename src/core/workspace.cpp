@@ -16,6 +16,8 @@ void Workspace::recycleAll() {
   recycle(pieces);
   recycle(starts);
   recycle(queue);
+  recycle(eventPoints);
+  recycle(freeEventPoints);
   if (nodes.size() * sizeof(StatusNode) > kKeptScratchBytes) {
     std::deque<StatusNode>().swap(nodes);
   } else {
@@ -34,6 +36,8 @@ void Workspace::release() {
   std::vector<SweepPiece>().swap(pieces);
   std::vector<SweepStart>().swap(starts);
   std::vector<SweepEvent>().swap(queue);
+  std::vector<ExactCoords>().swap(eventPoints);
+  std::vector<int>().swap(freeEventPoints);
   std::deque<StatusNode>().swap(nodes);
   std::vector<int>().swap(freeNodes);
   std::vector<int>().swap(starting);

@@ -68,13 +68,23 @@ struct SweepStart {
   bool end;  ///< the right end of `piece` (a hint: the piece may have been merged away)
 };
 
-/// A point the sweep must visit that is not an input vertex: a crossing, an off-grid end, or
-/// where a merged coincident piece goes on.
-struct SweepEvent {
-  XPoint point;
-  int piece = -1;    ///< -1: visit the point only
-  int through = -1;  ///< a crossing: one of the two pieces crossing there (locates p)
+/// The exact coordinates of an XPoint without its cached doubles (an event keeps those).
+struct ExactCoords {
+  i128 x, y, w;
 };
+
+/// A point the sweep must visit that is not an input vertex: a crossing, an off-grid end, or
+/// where a merged coincident piece goes on. 32 bytes: the exact coordinates live in the event
+/// point pool (Workspace::eventPoints, 48 bytes a slot); the heap orders events by the cached
+/// doubles first and reads the pool only when they cannot decide.
+struct SweepEvent {
+  double fx = 0, fy = 0;  ///< the point's cached doubles (XPoint::fx, fy)
+  int point = -1;         ///< its index in Workspace::eventPoints
+  int piece = -1;         ///< -1: visit the point only
+  int through = -1;       ///< a crossing: one of the two pieces crossing there (locates p)
+  int other = -1;         ///< a crossing: the other piece
+};
+static_assert(sizeof(SweepEvent) == 32, "the event heap moves these around: keep them small");
 
 /// A vertex of a path being pre-clipped and the supporting segment of the edge leaving it
 /// (convex_clip.cpp).
@@ -88,7 +98,9 @@ struct Workspace {
   // Sweep (split_edges.cpp).
   std::vector<SweepPiece> pieces;
   std::vector<SweepStart> starts;
-  std::vector<SweepEvent> queue;  ///< a binary heap, earliest point first
+  std::vector<SweepEvent> queue;         ///< a binary heap, earliest point first
+  std::vector<ExactCoords> eventPoints;  ///< exact points of queued events (slots are reused)
+  std::vector<int> freeEventPoints;      ///< free slots of eventPoints
   /// Status node pool, as many as the status was ever wide (a deque: nodes never move).
   std::deque<StatusNode> nodes;
   std::vector<int> freeNodes;
