@@ -395,8 +395,20 @@ class Sweep {
       const int c = compare(pieces_[a].right, pieces_[b].right);
       return c != 0 ? c < 0 : a < b;
     };
-    // Mostly one piece (a chain going on) or two (a crossing): no sort call for those.
+    const auto cancels = [this](int i) {
+      const SweepPiece& a = pieces_[i];
+      return !a.open && a.contribution[0] == 0 && a.contribution[1] == 0;
+    };
+    // Mostly one piece (a chain going on) or two (a crossing): no sort call for those, and two
+    // in different directions (a crossing) have nothing to merge.
     if (starting_.size() == 2) {
+      const int s = crossSign(pieces_[starting_[0]].direction(), pieces_[starting_[1]].direction());
+      if (s != 0) {
+        if (s < 0) std::swap(starting_[0], starting_[1]);
+        starting_.erase(std::remove_if(starting_.begin(), starting_.end(), cancels),
+                        starting_.end());
+        return;
+      }
       if (before(starting_[1], starting_[0])) std::swap(starting_[0], starting_[1]);
     } else if (starting_.size() > 2) {
       std::sort(starting_.begin(), starting_.end(), before);
@@ -415,8 +427,7 @@ class Sweep {
         }
         ++j;
       }
-      const Windings& c = pieces_[first].contribution;
-      if (pieces_[first].open || c[0] != 0 || c[1] != 0) starting_[kept++] = first;
+      if (!cancels(first)) starting_[kept++] = first;
       i = j;
     }
     starting_.resize(kept);
