@@ -167,8 +167,7 @@ std::vector<Feature> simplifyFeatures(const std::vector<Feature>& features,
 std::vector<Feature> clipFeatures(ClipOp op, const std::vector<Feature>& subject,
                                   const std::string& subjectSource,
                                   const std::vector<Feature>& clip, const std::string& clipSource,
-                                  FillRule subjectRule, FillRule clipRule,
-                                  const Options& options) {
+                                  FillRule subjectRule, FillRule clipRule, const Options& options) {
   // The union of the clip features: each one's region under clipRule (the union of nothing with
   // it), its rings then read together under NonZero. One feature gives the region its rings make
   // under clipRule, as when every ring is clipped against at once.
@@ -176,8 +175,8 @@ std::vector<Feature> clipFeatures(ClipOp op, const std::vector<Feature>& subject
   std::size_t offset = 0;
   for (const Feature& feature : clip) {
     try {
-      const PolygonSet set =
-          roiclip::clip(ClipOp::Union, {}, allRings({feature}), FillRule::NonZero, clipRule, options);
+      const PolygonSet set = roiclip::clip(ClipOp::Union, {}, allRings({feature}),
+                                           FillRule::NonZero, clipRule, options);
       const Paths rings = set.toPaths();
       region.insert(region.end(), rings.begin(), rings.end());
     } catch (const InvalidInputError& e) {
@@ -215,8 +214,7 @@ SnapShift measureSnapShift(const Paths& paths, const Grid& grid) {
         // The core's own snapping (Grid::toUnits()); NaN and out-of-range are the core's to say.
         const std::optional<std::int64_t> units = grid.toUnits(coordinates[axis], origins[axis]);
         if (!units) continue;
-        const double move =
-            std::fabs(coordinates[axis] - grid.toCoordinate(*units, origins[axis]));
+        const double move = std::fabs(coordinates[axis] - grid.toCoordinate(*units, origins[axis]));
         moved = moved || move * grid.scale > kSnapWarningFraction;
         if (move > shift.largest) {
           shift.largest = move;
@@ -235,11 +233,12 @@ std::vector<Warning> snapWarnings(const Paths& paths, const std::string& source,
   if (shift.moved == 0) return {};
   char largest[64];
   std::snprintf(largest, sizeof largest, "%.3g", shift.largest);
-  return {{source, "snapping to the " + gridStep(grid.scale) + " grid moved " +
-                       std::to_string(shift.moved) + " of " + std::to_string(shift.vertices) +
-                       " vertices by more than 1/4 grid step (up to " + largest + " px, path " +
-                       std::to_string(shift.path) + ", vertex " + std::to_string(shift.vertex) +
-                       "); a larger --grid SCALE, or --grid auto (the default), keeps more digits"}};
+  return {
+      {source, "snapping to the " + gridStep(grid.scale) + " grid moved " +
+                   std::to_string(shift.moved) + " of " + std::to_string(shift.vertices) +
+                   " vertices by more than 1/4 grid step (up to " + largest + " px, path " +
+                   std::to_string(shift.path) + ", vertex " + std::to_string(shift.vertex) +
+                   "); a larger --grid SCALE, or --grid auto (the default), keeps more digits"}};
 }
 
 std::string sourceName(const std::string& file) { return file == "-" ? kStdin : file; }
