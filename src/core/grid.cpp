@@ -8,29 +8,14 @@
 
 #include <roiclip/roiclip.hpp>
 
+#include "pipeline.hpp"
+
 namespace roiclip {
 namespace {
 
 constexpr double kMaxOriginUnits = 0x1p100;  // |origin * scale|: the output stage's bit budget
 
 inline double roundUnits(double u) { return detail::roundToUnits(u); }
-
-struct Box {
-  double minX = INFINITY, maxX = -INFINITY, minY = INFINITY, maxY = -INFINITY;
-  void add(const Paths& paths) {
-    for (const Path& path : paths) {
-      for (const Point& p : path) {
-        // NaN and infinity are left to the snapping, which names the path and vertex.
-        if (!std::isfinite(p.x) || !std::isfinite(p.y)) continue;
-        minX = std::min(minX, p.x);
-        maxX = std::max(maxX, p.x);
-        minY = std::min(minY, p.y);
-        maxY = std::max(maxY, p.y);
-      }
-    }
-  }
-  [[nodiscard]] bool empty() const { return !(minX <= maxX); }
-};
 
 void checkFixed(const Grid& grid) {
   if (!(grid.scale > 0.0) || !std::isfinite(grid.scale)) {
@@ -58,7 +43,7 @@ Grid resolveGrid(const Grid& grid, const Paths& subject, const Paths& clip) {
     checkFixed(grid);
     return grid;
   }
-  Box box;
+  detail::Box box;
   box.add(subject);
   box.add(clip);
   if (box.empty()) return Grid::fixed(1.0);

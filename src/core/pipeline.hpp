@@ -3,7 +3,9 @@
 // boolean_op.cpp strings them together; each stage lives in its own file.
 #pragma once
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -214,6 +216,24 @@ std::vector<InputEdge> snapRoundPieces(const Arrangement& arrangement, std::int6
 /// The general path (every operation, no convex shortcut): stages 0 to 4.
 PolygonSet booleanGeneral(const Paths& subject, const Paths* clipPaths, const BooleanSpec& spec,
                           const Grid& grid);
+
+/// The bounding box of the finite vertices of some paths (resolveGrid(), PreparedRegion). NaN
+/// and infinity are skipped: the snapping reports them, naming the path and vertex.
+struct Box {
+  double minX = INFINITY, maxX = -INFINITY, minY = INFINITY, maxY = -INFINITY;
+  void add(const Paths& paths) {
+    for (const Path& path : paths) {
+      for (const Point& p : path) {
+        if (!std::isfinite(p.x) || !std::isfinite(p.y)) continue;
+        minX = std::min(minX, p.x);
+        maxX = std::max(maxX, p.x);
+        minY = std::min(minY, p.y);
+        maxY = std::max(maxY, p.y);
+      }
+    }
+  }
+  [[nodiscard]] bool empty() const { return !(minX <= maxX); }
+};
 
 /// One operand, snapped and validated once: its rings, its fill rule, and the orientation of
 /// its ring when it is a single strictly convex one (convexOrientation(), else 0).

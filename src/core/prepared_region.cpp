@@ -14,22 +14,14 @@ namespace {
 // The bounding box of every finite vertex, as one closed path of its corners (empty when there
 // is none), grown by `grow` times its larger side on every side.
 Paths boxOf(const Paths& paths, double grow) {
-  double minX = INFINITY, maxX = -INFINITY, minY = INFINITY, maxY = -INFINITY;
-  for (const Path& path : paths) {
-    for (const Point& p : path) {
-      if (!std::isfinite(p.x) || !std::isfinite(p.y)) continue;
-      minX = std::min(minX, p.x);
-      maxX = std::max(maxX, p.x);
-      minY = std::min(minY, p.y);
-      maxY = std::max(maxY, p.y);
-    }
-  }
-  if (!(minX <= maxX)) return {};
-  const double margin = grow * std::max({maxX - minX, maxY - minY, 1.0});
-  return {{{minX - margin, minY - margin},
-           {maxX + margin, minY - margin},
-           {maxX + margin, maxY + margin},
-           {minX - margin, maxY + margin}}};
+  detail::Box box;
+  box.add(paths);
+  if (box.empty()) return {};
+  const double margin = grow * std::max({box.maxX - box.minX, box.maxY - box.minY, 1.0});
+  return {{{box.minX - margin, box.minY - margin},
+           {box.maxX + margin, box.minY - margin},
+           {box.maxX + margin, box.maxY + margin},
+           {box.minX - margin, box.maxY + margin}}};
 }
 
 // With a fitted grid the region gets a grid fitted to its box grown by this many times its side
