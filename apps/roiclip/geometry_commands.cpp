@@ -52,7 +52,8 @@ constexpr const char* kFeaturesHelp =
     "up, clockwise on a y-down image); --orientation opencv writes cv::findContours' order.\n"
     "'-' reads standard input or writes standard output. Warnings (stderr): a z coordinate\n"
     "is dropped; snapping to a fixed --grid moved a vertex by more than 1/4 grid step;\n"
-    "degenerate rings were ignored (the summary properties count them: \"ignoredRings\").\n"
+    "degenerate rings were ignored (the summary properties count them: \"ignoredRings\",\n"
+    "and for the CLIP operand of clip \"ignoredClipRings\").\n"
     "\n";
 
 constexpr const char* kClipLinesHelp =
@@ -236,7 +237,8 @@ void roundResults(std::vector<io::Feature>& results, const std::vector<io::Featu
       polygon.holes.assign(rings.begin() + 1, rings.end());
       set.polygons.push_back(std::move(polygon));
     }
-    io::Feature rounded = io::toFeature(roundTo(set, step));
+    io::Feature rounded =
+        io::toFeature(roundTo(set, step), results[i].ignoredRings, results[i].ignoredClipRings);
     rounded.id = results[i].id;
     if (!inputs[i].propertiesJson.empty()) {
       rounded.propertiesJson = results[i].propertiesJson;
@@ -261,17 +263,21 @@ void GeometryCommands::execute() const {
       warnings.push_back(std::move(w));
     }
   };
-  // Degenerate rings are ignored (not an error without --strict): one line per input says so.
-  const auto ignoredCheck = [&](const std::vector<io::Feature>& result, const std::string& file) {
+  // Degenerate rings are ignored (not an error without --strict): one line per input says so,
+  // naming the operand when there are two ("ignored 1 clip ring ...").
+  const auto ignoredWarning = [&](std::size_t ignored, const std::string& file, Operand operand) {
+    if (ignored == 0) return;
+    const std::string which = operand == Operand::None ? "" : toString(operand) + std::string(" ");
+    warnings.push_back({io::sourceName(file),
+                        "ignored " + std::to_string(ignored) + " " + which +
+                            (ignored == 1 ? "ring" : "rings") +
+                            " with fewer than 3 distinct points or no area (--strict refuses "
+                            "them)"});
+  };
+  const auto subjectIgnored = [](const std::vector<io::Feature>& result) {
     std::size_t ignored = 0;
     for (const io::Feature& f : result) ignored += f.ignoredRings;
-    if (ignored > 0) {
-      warnings.push_back({io::sourceName(file),
-                          "ignored " + std::to_string(ignored) +
-                              (ignored == 1 ? " ring" : " rings") +
-                              " with fewer than 3 distinct points or no area (--strict refuses "
-                              "them)"});
-    }
+    return ignored;
   };
   const auto writeOptions = [](const Common& options) {
     return io::WriteOptions{io::parseRingOrientation(options.orientation.c_str()), -1};
@@ -282,7 +288,7 @@ void GeometryCommands::execute() const {
     const auto input = readRegions(s.input, s.inputFormat, s.dissolve, strict_, warnings);
     snapCheck(io::allRings(input), s.input);
     auto result = io::simplifyFeatures(input, io::sourceName(s.input), rule, options_);
-    ignoredCheck(result, s.input);
+    ignoredWarning(subjectIgnored(result), s.input, Operand::None);
     roundResults(result, input, s.roundTo);
     printWarnings(warnings);
     io::writeFeatures(result, s.output, io::parseFormat(s.format.c_str()), writeOptions(s));
@@ -300,7 +306,9 @@ void GeometryCommands::execute() const {
     snapCheck(io::allRings(clipRegion), c.clip);
     auto result = io::clipFeatures(op, subject, io::sourceName(c.subject), clipRegion,
                                    io::sourceName(c.clip), subjectRule, clipRule, options_);
-    ignoredCheck(result, c.subject);
+    ignoredWarning(subjectIgnored(result), c.subject, Operand::Subject);
+    // Every result counts the whole clip operand's; the first says it for all.
+    ignoredWarning(result.empty() ? 0 : result.front().ignoredClipRings, c.clip, Operand::Clip);
     roundResults(result, subject, c.roundTo);
     printWarnings(warnings);
     io::writeFeatures(result, c.output, io::parseFormat(c.format.c_str()), writeOptions(c));

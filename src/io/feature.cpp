@@ -54,9 +54,9 @@ std::size_t ringCount(const Feature& feature) {
 
 // The result of an operation on `input` as a feature: `input`'s id and properties, or the
 // summary properties of toFeature() when it has none.
-Feature withIdentity(const PolygonSet& set, const Feature& input, std::size_t ignoredRings) {
-  Feature out = toFeature(set, ignoredRings);
-  out.ignoredRings = ignoredRings;
+Feature withIdentity(const PolygonSet& set, const Feature& input, std::size_t ignoredRings,
+                     std::size_t ignoredClipRings = 0) {
+  Feature out = toFeature(set, ignoredRings, ignoredClipRings);
   out.id = input.id;
   if (!input.propertiesJson.empty()) {
     out.propertiesJson = input.propertiesJson;
@@ -112,8 +112,10 @@ Feature dissolve(const std::vector<Feature>& features) {
   return out;
 }
 
-Feature toFeature(const PolygonSet& set, std::size_t ignoredRings) {
+Feature toFeature(const PolygonSet& set, std::size_t ignoredRings, std::size_t ignoredClipRings) {
   Feature out;
+  out.ignoredRings = ignoredRings;
+  out.ignoredClipRings = ignoredClipRings;
   out.polygons.reserve(set.polygons.size());
   for (const Polygon& polygon : set.polygons) {
     Paths rings;
@@ -124,6 +126,7 @@ Feature toFeature(const PolygonSet& set, std::size_t ignoredRings) {
   }
   nlohmann::ordered_json properties{{"area", set.area()}, {"rings", set.ringCount()}};
   if (ignoredRings > 0) properties["ignoredRings"] = ignoredRings;
+  if (ignoredClipRings > 0) properties["ignoredClipRings"] = ignoredClipRings;
   out.propertiesJson = properties.dump();
   return out;
 }
@@ -172,13 +175,15 @@ std::vector<Feature> clipFeatures(ClipOp op, const std::vector<Feature>& subject
   // it), its rings then read together under NonZero. One feature gives the region its rings make
   // under clipRule, as when every ring is clipped against at once.
   Paths region;
-  std::size_t offset = 0;
+  std::size_t offset = 0, ignoredClipRings = 0;
   for (const Feature& feature : clip) {
     try {
-      const PolygonSet set = roiclip::clip(ClipOp::Union, {}, allRings({feature}),
-                                           FillRule::NonZero, clipRule, options);
-      const Paths rings = set.toPaths();
-      region.insert(region.end(), rings.begin(), rings.end());
+      const Paths rings = allRings({feature});
+      const PolygonSet set =
+          roiclip::clip(ClipOp::Union, {}, rings, FillRule::NonZero, clipRule, options);
+      ignoredClipRings += ignored(rings, options);
+      const Paths united = set.toPaths();
+      region.insert(region.end(), united.begin(), united.end());
     } catch (const InvalidInputError& e) {
       throw nameSource(e, {{Operand::Subject, subjectSource}, {Operand::Clip, clipSource}}, offset);
     }
@@ -192,7 +197,7 @@ std::vector<Feature> clipFeatures(ClipOp op, const std::vector<Feature>& subject
       const Paths rings = allRings({feature});
       const PolygonSet set =
           roiclip::clip(op, rings, region, subjectRule, FillRule::NonZero, options);
-      out.push_back(withIdentity(set, feature, ignored(rings, options, region)));
+      out.push_back(withIdentity(set, feature, ignored(rings, options, region), ignoredClipRings));
     } catch (const InvalidInputError& e) {
       throw nameSource(e, {{Operand::Subject, subjectSource}, {Operand::Clip, clipSource}}, offset);
     }

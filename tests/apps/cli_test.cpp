@@ -218,15 +218,43 @@ TEST_F(Cli, DegenerateRingsAreCounted) {
   const CliRun w = run("simplify '" + wkt.string() + "'");
   ASSERT_EQ(w.exitCode, 0) << w.err;
   EXPECT_EQ(properties(w.out).at("ignoredRings"), 2);
-  const CliRun c = run("clip " + file + " '" + kData + "square.geojson'");
+  const std::string square = "'" + kData + "square.geojson'";
+  const CliRun c = run("clip " + file + " " + square);
   ASSERT_EQ(c.exitCode, 0) << c.err;
   EXPECT_EQ(properties(c.out).at("ignoredRings"), 1);
+  EXPECT_FALSE(properties(c.out).contains("ignoredClipRings"));
+  EXPECT_NE(r.err.find("degenerate_ring.geojson: ignored 1 ring with"), std::string::npos);
+  EXPECT_NE(c.err.find("degenerate_ring.geojson: ignored 1 subject ring with"), std::string::npos)
+      << c.err;
+  // The clip operand's degenerate rings are counted too, and the warning says which operand.
+  const CliRun byDegenerate = run("clip " + square + " " + file);
+  ASSERT_EQ(byDegenerate.exitCode, 0) << byDegenerate.err;
+  EXPECT_FALSE(properties(byDegenerate.out).contains("ignoredRings"));
+  EXPECT_EQ(properties(byDegenerate.out).at("ignoredClipRings"), 1);
+  EXPECT_NE(byDegenerate.err.find("degenerate_ring.geojson: ignored 1 clip ring with fewer than "
+                                  "3 distinct points or no area"),
+            std::string::npos)
+      << byDegenerate.err;
+  EXPECT_EQ(byDegenerate.err.find("subject"), std::string::npos) << byDegenerate.err;
+  // Both operands, and --round-to keeps both counts.
+  const CliRun both = run("clip --round-to 1 " + file + " '" + wkt.string() + "'");
+  ASSERT_EQ(both.exitCode, 0) << both.err;
+  EXPECT_EQ(properties(both.out).at("ignoredRings"), 1);
+  EXPECT_EQ(properties(both.out).at("ignoredClipRings"), 2);
+  EXPECT_NE(both.err.find("degenerate.wkt: ignored 2 clip rings"), std::string::npos) << both.err;
   // A clean input has no such property.
   EXPECT_FALSE(
       properties(run("simplify '" + kData + "square.geojson'").out).contains("ignoredRings"));
   expectBadInput(run("simplify --strict " + file), "degenerate_ring.geojson",
                  "polygon 1, ring 0 (path 1): ring has fewer than 3 distinct points");
   expectBadInput(run("simplify --strict '" + wkt.string() + "'"), "degenerate.wkt",
+                 "ring has fewer than 3 distinct points");
+  // --strict refuses them in either operand of clip.
+  expectBadInput(run("clip --strict " + file + " " + square), "degenerate_ring.geojson",
+                 "polygon 1, ring 0 (path 1): ring has fewer than 3 distinct points");
+  expectBadInput(run("clip --strict " + square + " " + file), "degenerate_ring.geojson",
+                 "polygon 1, ring 0 (path 1): ring has fewer than 3 distinct points");
+  expectBadInput(run("clip --strict " + square + " '" + wkt.string() + "'"), "degenerate.wkt",
                  "ring has fewer than 3 distinct points");
 }
 

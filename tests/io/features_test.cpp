@@ -258,8 +258,27 @@ TEST(DegenerateRings, EveryReaderKeepsThemAndTheOperationsCountThem) {
                      {toFeature(simplify({{{0, 0}, {5, 0}, {5, 5}}}, FillRule::NonZero))}, "clip",
                      FillRule::EvenOdd, FillRule::NonZero);
     ignored = 0;
-    for (const Feature& f : clipped) ignored += f.ignoredRings;
+    for (const Feature& f : clipped) {
+      ignored += f.ignoredRings;
+      EXPECT_EQ(f.ignoredClipRings, 0u);
+    }
     EXPECT_EQ(ignored, 2u);
+    // The same rings as the clip operand: counted as the clip's, in every result (two subject
+    // features without properties, so they get the summary properties).
+    std::vector<Feature> subjects(2);
+    subjects[0].polygons = {{{{0, 0}, {5, 0}, {5, 5}}}};
+    subjects[1].polygons = {{{{1, 0}, {6, 0}, {6, 5}}}};
+    const std::vector<Feature> byDegenerate =
+        clipFeatures(ClipOp::Intersection, subjects, "subject", features, "in", FillRule::NonZero,
+                     FillRule::EvenOdd);
+    ASSERT_EQ(byDegenerate.size(), 2u);
+    for (const Feature& f : byDegenerate) {
+      EXPECT_EQ(f.ignoredRings, 0u);
+      EXPECT_EQ(f.ignoredClipRings, 2u);
+      EXPECT_NE(f.propertiesJson.find("\"ignoredClipRings\":2"), std::string::npos)
+          << f.propertiesJson;
+      EXPECT_EQ(f.propertiesJson.find("\"ignoredRings\""), std::string::npos) << f.propertiesJson;
+    }
     // The summary properties name the count (features with their own properties keep them).
     for (std::size_t i = 0; i < simple.size(); ++i) {
       if (features[i].propertiesJson.empty() && simple[i].ignoredRings > 0) {

@@ -75,6 +75,11 @@ struct Feature {
   /// contributed nothing (countDegeneratePaths()). Written as the property "ignoredRings" when
   /// non-zero and the feature has roiclip's summary properties ("area", "rings").
   std::size_t ignoredRings = 0;
+  /// In results of clipFeatures(): how many rings of the clip operand (all the clip features)
+  /// contributed nothing, the same in every result of one call (the whole clip operand is
+  /// applied to each subject feature). Written as the property "ignoredClipRings" as
+  /// ignoredRings is.
+  std::size_t ignoredClipRings = 0;
 };
 
 /// Every ring of every polygon of `features` as one path set, in order (the core's input).
@@ -84,9 +89,11 @@ Paths allRings(const std::vector<Feature>& features);
 Feature dissolve(const std::vector<Feature>& features);
 
 /// A PolygonSet as a feature: each polygon its outer ring, then its holes; properties
-/// {"area": set.area(), "rings": set.ringCount()}, plus "ignoredRings" when `ignoredRings` is
-/// non-zero; no id.
-Feature toFeature(const PolygonSet& set, std::size_t ignoredRings = 0);
+/// {"area": set.area(), "rings": set.ringCount()}, plus "ignoredRings" and "ignoredClipRings"
+/// when `ignoredRings` and `ignoredClipRings` are non-zero (the fields are set to them too); no
+/// id.
+Feature toFeature(const PolygonSet& set, std::size_t ignoredRings = 0,
+                  std::size_t ignoredClipRings = 0);
 
 /// The name of the input (a file) an operand of the core was read from.
 struct Source {
@@ -112,7 +119,9 @@ std::vector<Feature> simplifyFeatures(const std::vector<Feature>& features,
 
 /// clip() of each subject feature (its rings under `subjectRule`) by the union of the clip
 /// features (each feature's rings under `clipRule`, then the union of all of them): one result
-/// per subject feature, in order, ids and properties kept as simplifyFeatures().
+/// per subject feature, in order, ids and properties kept as simplifyFeatures(). Each result
+/// counts the subject feature's degenerate rings (Feature::ignoredRings) and the clip operand's
+/// (Feature::ignoredClipRings).
 /// @throws InvalidInputError from the core, naming the file of the operand it concerns.
 std::vector<Feature> clipFeatures(ClipOp op, const std::vector<Feature>& subject,
                                   const std::string& subjectSource,
