@@ -204,6 +204,19 @@ std::vector<std::vector<cv::Point>> nonEmpty(std::vector<std::vector<cv::Point>>
   return contours;
 }
 
+void fill(cv::InputOutputArray image, const FixedPointContours& c, const cv::Scalar& color,
+          int lineType) {
+  const auto contours = nonEmpty(c.contours.contours);
+  if (!contours.empty()) cv::fillPoly(image, contours, color, lineType, c.shift);
+}
+
+void outline(cv::InputOutputArray image, const FixedPointContours& c, bool closed,
+             const cv::Scalar& color, int thickness, int lineType) {
+  const auto contours = nonEmpty(c.contours.contours);
+  if (!contours.empty())
+    cv::polylines(image, contours, closed, color, thickness, lineType, c.shift);
+}
+
 }  // namespace
 
 Path fromContour(cv::InputArray contour) { return convertContour(contour.getMat(), 0); }
@@ -274,9 +287,11 @@ Contours<cv::Point2d> toContours2d(const PolygonSet& set) {
   return convertSet<cv::Point2d>(set, 1.0);
 }
 
+// Snap-rounded onto the 2^-shift grid first, as toContours(): its vertices scale to exact ints.
 FixedPointContours toFixedPointContours(const PolygonSet& set, int shift) {
   checkShift(shift);
-  return {convertSet<cv::Point>(set, std::ldexp(1.0, shift)), shift};
+  return {convertSet<cv::Point>(roundTo(set, std::ldexp(1.0, -shift)), std::ldexp(1.0, shift)),
+          shift};
 }
 
 FixedPointContours toFixedPointContours(const Paths& paths, int shift) {
@@ -293,15 +308,12 @@ FixedPointContours toFixedPointContours(const Paths& paths, int shift) {
 
 void fillPolygonSet(cv::InputOutputArray image, const PolygonSet& set, const cv::Scalar& color,
                     int lineType) {
-  const FixedPointContours c = toFixedPointContours(set);
-  const auto contours = nonEmpty(c.contours.contours);
-  if (contours.empty()) return;
-  cv::fillPoly(image, contours, color, lineType, c.shift);
+  fill(image, toFixedPointContours(set), color, lineType);
 }
 
 void drawPolygonSet(cv::InputOutputArray image, const PolygonSet& set, const cv::Scalar& color,
                     int thickness, int lineType) {
-  drawPaths(image, set.toPaths(), color, thickness, lineType, true);
+  outline(image, toFixedPointContours(set), true, color, thickness, lineType);
 }
 
 void fillPaths(cv::InputOutputArray image, const Paths& paths, FillRule rule,
@@ -310,18 +322,12 @@ void fillPaths(cv::InputOutputArray image, const Paths& paths, FillRule rule,
     fillPolygonSet(image, simplify(paths, rule), color, lineType);
     return;
   }
-  const FixedPointContours c = toFixedPointContours(paths);
-  const auto contours = nonEmpty(c.contours.contours);
-  if (contours.empty()) return;
-  cv::fillPoly(image, contours, color, lineType, c.shift);
+  fill(image, toFixedPointContours(paths), color, lineType);
 }
 
 void drawPaths(cv::InputOutputArray image, const Paths& paths, const cv::Scalar& color,
                int thickness, int lineType, bool closed) {
-  const FixedPointContours c = toFixedPointContours(paths);
-  const auto contours = nonEmpty(c.contours.contours);
-  if (contours.empty()) return;
-  cv::polylines(image, contours, closed, color, thickness, lineType, c.shift);
+  outline(image, toFixedPointContours(paths), closed, color, thickness, lineType);
 }
 
 }  // namespace roiclip::opencv

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <iostream>
 #include <random>
 #include <string>
 #include <vector>
@@ -261,46 +262,101 @@ int crossingEdgePairs(const std::vector<std::vector<cv::Point>>& contours) {
   return count;
 }
 
-TEST(ToContours, FillPolyNeverSeesACrossing) {
-  // Dense random self-intersecting polygons clipped and simplified, with sub-pixel crossings.
-  std::mt19937 rng(77);
-  std::uniform_int_distribution<int> coord(0, 30 * 256);
+// The set's vertices times `scale`, each rounded on its own (what the conversions used to do).
+std::vector<std::vector<cv::Point>> roundEachVertex(const PolygonSet& set, double scale) {
+  std::vector<std::vector<cv::Point>> out;
+  for (const auto& c : toContours2d(set).contours) {
+    out.emplace_back();
+    for (const cv::Point2d& p : c) {
+      out.back().emplace_back(int(std::lround(p.x * scale)), int(std::lround(p.y * scale)));
+    }
+  }
+  return out;
+}
+
+// Dense random self-intersecting polygons in [0, 30]^2 (coordinates on the 1/`units` grid),
+// simplified and clipped (3 sets per pair), with sub-pixel crossings.
+std::vector<PolygonSet> denseRandomSets(unsigned seed, int pairs, int units) {
+  std::mt19937 rng(seed);
+  std::uniform_int_distribution<int> coord(0, 30 * units);
   const auto polygon = [&](int n) {
     Path p;
-    for (int i = 0; i < n; ++i) p.emplace_back(coord(rng) / 256.0, coord(rng) / 256.0);
+    for (int i = 0; i < n; ++i)
+      p.emplace_back(coord(rng) / double(units), coord(rng) / double(units));
     return p;
   };
-  int naiveCrossing = 0, cases = 0;
-  double areaError = 0;
-  for (int iter = 0; iter < 80; ++iter) {
+  std::vector<PolygonSet> sets;
+  for (int iter = 0; iter < pairs; ++iter) {
     const Paths a = {polygon(10 + iter % 25)};
     const Paths b = {polygon(4 + iter % 6)};
-    for (const PolygonSet& set :
-         {simplify(a, FillRule::EvenOdd), intersect(a, b), subtract(a, b, FillRule::NonZero)}) {
-      ++cases;
-      const Contours<cv::Point> ints = toContours(set);
-      ASSERT_EQ(crossingEdgePairs(ints.contours), 0) << "case " << cases;
-      // Rounded vertex by vertex, many of the same sets cross.
-      const Contours<cv::Point2d> exact = toContours2d(set);
-      std::vector<std::vector<cv::Point>> naive;
-      for (const auto& c : exact.contours) {
-        naive.emplace_back();
-        for (const cv::Point2d& p : c) {
-          naive.back().emplace_back(int(std::lround(p.x)), int(std::lround(p.y)));
-        }
-      }
-      naiveCrossing += crossingEdgePairs(naive) > 0;
-      // fillPoly draws the rounded region: its area (pixel count) is close to the exact one.
-      cv::Mat mask(32, 32, CV_8UC1, cv::Scalar(0));
-      if (!ints.contours.empty()) cv::fillPoly(mask, ints.contours, cv::Scalar(255));
-      double rounded = 0;
-      for (const auto& c : ints.contours) rounded -= cv::contourArea(c, true);
-      areaError = std::max(areaError, std::fabs(rounded - set.area()) / (set.area() + 1));
-      EXPECT_GE(cv::countNonZero(mask), rounded * 0.5) << "case " << cases;
-    }
+    sets.push_back(simplify(a, FillRule::EvenOdd));
+    sets.push_back(intersect(a, b));
+    sets.push_back(subtract(a, b, FillRule::NonZero));
+  }
+  return sets;
+}
+
+TEST(ToContours, FillPolyNeverSeesACrossing) {
+  int naiveCrossing = 0, cases = 0;
+  double areaError = 0;
+  for (const PolygonSet& set : denseRandomSets(77, 80, 256)) {
+    ++cases;
+    const Contours<cv::Point> ints = toContours(set);
+    ASSERT_EQ(crossingEdgePairs(ints.contours), 0) << "case " << cases;
+    // Rounded vertex by vertex, many of the same sets cross.
+    naiveCrossing += crossingEdgePairs(roundEachVertex(set, 1.0)) > 0;
+    // fillPoly draws the rounded region: its area (pixel count) is close to the exact one.
+    cv::Mat mask(32, 32, CV_8UC1, cv::Scalar(0));
+    if (!ints.contours.empty()) cv::fillPoly(mask, ints.contours, cv::Scalar(255));
+    double rounded = 0;
+    for (const auto& c : ints.contours) rounded -= cv::contourArea(c, true);
+    areaError = std::max(areaError, std::fabs(rounded - set.area()) / (set.area() + 1));
+    EXPECT_GE(cv::countNonZero(mask), rounded * 0.5) << "case " << cases;
   }
   EXPECT_GT(naiveCrossing, 30);
   EXPECT_LT(areaError, 0.5);
+}
+
+double perimeter(const PolygonSet& set) {
+  double total = 0;
+  for (const auto& c : toContours2f(set).contours) total += cv::arcLength(c, true);
+  return total;
+}
+
+TEST(ToFixedPointContours, FillPolyNeverSeesACrossing) {
+  // As ToContours.FillPolyNeverSeesACrossing, at sub-pixel shifts: coordinates on a 1/4096 px
+  // grid, so crossings and vertices lie between the 2^-shift steps.
+  int naiveCrossing[17] = {}, cases = 0;
+  for (const PolygonSet& set : denseRandomSets(78, 60, 4096)) {
+    ++cases;
+    for (const int shift : {2, 4, kDefaultShift}) {
+      const double scale = std::ldexp(1.0, shift);
+      const FixedPointContours fixed = toFixedPointContours(set, shift);
+      ASSERT_EQ(fixed.shift, shift);
+      ASSERT_EQ(crossingEdgePairs(fixed.contours.contours), 0)
+          << "case " << cases << " shift " << shift;
+      ASSERT_EQ(fixed.contours.hierarchy.size(), fixed.contours.contours.size());
+      // The rounded region is within the snap-rounding bound of the exact one.
+      double rounded = 0;
+      for (const auto& c : fixed.contours.contours) rounded -= cv::contourArea(c, true);
+      rounded /= scale * scale;
+      EXPECT_LE(std::fabs(rounded - set.area()), perimeter(set) / scale / 2)
+          << "case " << cases << " shift " << shift;
+      // Rounded vertex by vertex, some of the same sets cross.
+      naiveCrossing[shift] += crossingEdgePairs(roundEachVertex(set, scale)) > 0;
+    }
+    // fillPolygonSet() (cv::fillPoly at kDefaultShift) fills about the same area.
+    cv::Mat mask(32, 32, CV_8UC1, cv::Scalar(0));
+    fillPolygonSet(mask, set, cv::Scalar(255));
+    EXPECT_GE(cv::countNonZero(mask), set.area() * 0.5) << "case " << cases;
+  }
+  EXPECT_GT(naiveCrossing[2], 30);
+  EXPECT_GT(naiveCrossing[4], 10);
+  EXPECT_GT(naiveCrossing[kDefaultShift], 0);
+  std::cout << "rounded vertex by vertex, sets with crossing edges: " << naiveCrossing[2]
+            << " at shift 2, " << naiveCrossing[4] << " at shift 4, "
+            << naiveCrossing[kDefaultShift] << " at shift " << kDefaultShift << " (of " << cases
+            << ")\n";
 }
 
 TEST(DrawPolygonSet, FillsSubPixelGeometry) {

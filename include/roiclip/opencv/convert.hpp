@@ -98,7 +98,7 @@ Contours<cv::Point2f> toContours2f(const PolygonSet& set);
 Contours<cv::Point2d> toContours2d(const PolygonSet& set);
 
 /// Fixed-point contours for cv::fillPoly / cv::polylines, which take a `shift`: each coordinate
-/// is std::lround(v * 2^shift), so vertices keep 1/2^shift px precision. cv::drawContours takes
+/// is v * 2^shift, an integer, so vertices keep 1/2^shift px precision. cv::drawContours takes
 /// no shift (only an offset), so it would draw these 2^shift times too large; give it
 /// toContours() instead, or draw with fillPolygonSet() / drawPolygonSet().
 struct FixedPointContours {
@@ -106,22 +106,30 @@ struct FixedPointContours {
   int shift = kDefaultShift;     ///< fractional bits, for cv::fillPoly / cv::polylines
 };
 /// Convert a polygon set to fixed-point contours; pass `shift` on to OpenCV's drawing calls.
+/// As toContours() does at whole pixels, the set is snap-rounded onto the 2^-shift px grid first
+/// (roiclip::roundTo(set, 2^-shift)), so the contours never cross or overlap and holes stay
+/// inside their outer ring: each boundary point moves by at most 0.71 * 2^-shift px, and parts
+/// thinner than 2^-shift px may vanish. The hierarchy is toContours()'s.
 /// @param shift fractional bits, 0..16 (cv::fillPoly's limit).
-/// @throws InvalidInputError if shift is out of range or a scaled coordinate does not fit in int.
+/// @throws InvalidInputError if shift is out of range, a scaled coordinate does not fit in int,
+/// or the set spans more than 2^30 steps of 2^-shift px (16384 px at shift 16).
 FixedPointContours toFixedPointContours(const PolygonSet& set, int shift = kDefaultShift);
-/// The same for raw paths (e.g. an ROI), no hierarchy (every path is a top-level contour).
+/// The same for raw paths (e.g. an ROI), no hierarchy (every path is a top-level contour). Raw
+/// paths may cross anyway, so each vertex is rounded on its own (std::lround(v * 2^shift)).
 FixedPointContours toFixedPointContours(const Paths& paths, int shift = kDefaultShift);
 
 /// Fill a polygon set into `image` with cv::fillPoly at sub-pixel precision (kDefaultShift).
-/// All rings go into one cv::fillPoly call (even-odd), which is exactly the set's region
-/// because roiclip rings never cross. Like every cv::fillPoly call, it also draws each edge
+/// All rings, snap-rounded to 1/2^kDefaultShift px (toFixedPointContours()), go into one
+/// cv::fillPoly call (even-odd), which is exactly the rounded region because they never cross.
+/// Like every cv::fillPoly call, it also draws each edge
 /// as a line, so pixels up to about 1 px outside the region can be set; rasterize() sets
 /// exactly the pixels whose centres are inside.
 /// @param image CV_8U..CV_64F image of any channel count, modified in place.
 void fillPolygonSet(cv::InputOutputArray image, const PolygonSet& set, const cv::Scalar& color,
                     int lineType = cv::LINE_8);
 
-/// Draw the rings of a polygon set as closed polylines at sub-pixel precision (kDefaultShift).
+/// Draw the rings of a polygon set as closed polylines at sub-pixel precision (kDefaultShift),
+/// snap-rounded as fillPolygonSet() fills them (the outlines never cross).
 void drawPolygonSet(cv::InputOutputArray image, const PolygonSet& set, const cv::Scalar& color,
                     int thickness = 1, int lineType = cv::LINE_8);
 
