@@ -212,6 +212,15 @@ PolygonSet buildNesting(const Arrangement& arrangement, const Contours& contours
 /// of the hot pixels it meets, in the order it meets them, directed with the filled side on its
 /// left. Returns those chains as input edges in step units (operand 0, winding +1 inside).
 std::vector<InputEdge> snapRoundPieces(const Arrangement& arrangement, std::int64_t unitsPerStep);
+/// The region the chains of a rounding pass bound (winding number > 0), rebuilt by the core;
+/// while the rebuild has a vertex off the step grid, it is rounded again (snapRoundPieces() in
+/// step units, every vertex's pixel hot) and rebuilt, each time adding 1 to `passes` (the passes
+/// that made `chains`). Snap rounding's chains never cross (Hobby; Guibas-Marimont), so the first
+/// rebuild is on the grid unless a hot pixel was missed: the repeat is the guard.
+/// @throws InternalError when that would make more than 8 passes.
+Arrangement rebuildOnStepGrid(std::vector<InputEdge> chains, int& passes);
+/// roundTo(), also giving the number of rounding passes it took (rebuildOnStepGrid()).
+PolygonSet roundToCountingPasses(const PolygonSet& region, double step, int& passes);
 
 /// The general path (every operation, no convex shortcut): stages 0 to 4.
 PolygonSet booleanGeneral(const Paths& subject, const Paths* clipPaths, const BooleanSpec& spec,
