@@ -1,8 +1,18 @@
 // SPDX-License-Identifier: MIT
-// The conformance suites of tests/data/conformance as data-driven tests: one parameterised test per
-// suite, one test per (case, operation).
+// The conformance suites of tests/data/conformance as data-driven tests, in two modes:
+//  - Conformance.*: one test per suite over all its cases, snapped to a FIXED grid the test
+//    chooses (about 2^29 units over the largest |coordinate|, ROICLIP_CONFORMANCE_EXPONENT), as
+//    below;
+//  - ConformanceFittedGrid.*: one test per suite over all its cases, with the coordinates as
+//    given on the library's default fitted grid, judged by the exact area of the input doubles
+//    (runFittedCase, further down).
+// Both are kept: the fitted mode is what callers of the defaults get; the fixed mode goes through
+// Grid::fixed and snaps far more coarsely (right-sweep-events-change-ordering, 0.01 degree wide
+// at longitude -85: 2^22 units per degree against the fitted 2^37), so it exercises the core
+// on heavily snapped, near-degenerate input; ROICLIP_CONFORMANCE_EXPONENT sweeps it for grid
+// sensitivity, and it has its own verdicts (tests/data/conformance/VERDICTS.md).
 //
-// Every case is judged twice:
+// In the fixed mode every case is judged twice:
 //  1. against an independent oracle (exact winding numbers of the raw double inputs at sample
 //     points away from every input edge): our result must agree at every sample;
 //  2. against the suite's expected result: equal area within the tolerance that snapping to the
@@ -10,16 +20,14 @@
 // Cases whose expectation is wrong are listed in tests/data/conformance/suite_errors.txt (evidence
 // in VERDICTS.md); for them the test asserts that we match the oracle and still differ from the
 // suite. Cases where we are wrong (core bugs) are listed in known_failures.txt and not run by
-// default; their count is printed. The summary per suite is printed at the end.
+// default; their count is printed. Each suite's test prints its summary line.
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
-#include <map>
 #include <random>
 #include <set>
 #include <sstream>
@@ -52,23 +60,21 @@ constexpr const char* kMartinez = "martinez_generic";
 constexpr int kTargetExponent = 29;
 
 struct Case {
-  std::string suite;     // kPolygonClipping or kMartinez
-  std::string name;      // folder (polygon_clipping) or file stem (martinez)
-  std::string op;        // the suite's own name: union, intersection, difference, xor, diff, ...
-  fs::path args;         // operands
-  fs::path expected;     // file holding the expected result
-  std::size_t feature;   // martinez: index of the expected feature in `expected`
-  std::string testName;  // gtest-safe
+  std::string suite;    // kPolygonClipping or kMartinez
+  std::string name;     // folder (polygon_clipping) or file stem (martinez)
+  std::string op;       // the suite's own name: union, intersection, difference, xor, diff, ...
+  fs::path args;        // operands
+  fs::path expected;    // file holding the expected result
+  std::size_t feature;  // martinez: index of the expected feature in `expected`
 
   [[nodiscard]] std::string id() const { return suite + "/" + name + "/" + op; }
 };
 
-std::ostream& operator<<(std::ostream& os, const Case& c) { return os << c.id(); }
-
-std::string sanitize(const std::string& s) {
-  std::string out;
-  for (char ch : s) out += std::isalnum(static_cast<unsigned char>(ch)) ? ch : '_';
-  return out;
+std::string str(double v) {
+  std::ostringstream out;
+  out.precision(6);
+  out << v;
+  return out.str();
 }
 
 // "suite/case/op" lines; '#' starts a comment.
@@ -109,7 +115,7 @@ std::vector<Case> allCases(const std::string& suite) {
           const fs::path expected = entry / (file + ".geojson");
           if (!fs::exists(expected)) continue;
           cases.push_back(
-              {suite, entry.filename().string(), op, entry / "args.geojson", expected, 0, ""});
+              {suite, entry.filename().string(), op, entry / "args.geojson", expected, 0});
           break;
         }
       }
@@ -118,15 +124,9 @@ std::vector<Case> allCases(const std::string& suite) {
       for (std::size_t f = 2; f < features.size(); ++f) {
         const auto op = features[f].properties.find("operation");
         if (op == features[f].properties.end()) continue;
-        cases.push_back({suite, entry.stem().string(), op->second, entry, entry, f, ""});
+        cases.push_back({suite, entry.stem().string(), op->second, entry, entry, f});
       }
     }
-  }
-  std::set<std::string> names;
-  for (std::size_t i = 0; i < cases.size(); ++i) {
-    std::string name = sanitize(cases[i].name + "__" + cases[i].op);
-    if (!names.insert(name).second) name += "_" + std::to_string(i);
-    cases[i].testName = name;
   }
   return cases;
 }
@@ -192,17 +192,20 @@ struct Loaded {
   Operation operation;
   std::vector<Paths> expected;  // polygons: outer ring, then holes
 
+  // The operation folded over the operands, given whether operand i covers the point: in(i).
+  template <class In>
+  [[nodiscard]] bool fold(ClipOp op, In in) const {
+    if (operands.empty()) return false;
+    if (operation.reversed) return testing::combine(op, in(1), in(0));
+    bool covered = in(0);
+    for (std::size_t i = 1; i < operands.size(); ++i)
+      covered = testing::combine(op, covered, in(i));
+    return covered;
+  }
+
   // The truth at p, from the raw operands.
   [[nodiscard]] bool truth(Point p) const {
-    if (operands.empty()) return false;
-    if (operation.reversed) {
-      return testing::combine(operation.op, operands[1].contains(p), operands[0].contains(p));
-    }
-    bool in = operands[0].contains(p);
-    for (std::size_t i = 1; i < operands.size(); ++i) {
-      in = testing::combine(operation.op, in, operands[i].contains(p));
-    }
-    return in;
+    return fold(operation.op, [&](std::size_t i) { return operands[i].contains(p); });
   }
 };
 
@@ -260,8 +263,9 @@ OperandPaths operandPaths(const Operand& operand, const Grid& grid) {
   auto add = [&](const Path& ring, bool hole) {
     const PolygonSet region = simplify({ring}, FillRule::NonZero, grid);
     const double length = pathLength(ring);
+    const double scale = resolveGrid(grid, {ring}).scale;  // the call's own, when fitted
     const bool simple =
-        std::fabs(region.area() - std::fabs(signedArea(ring))) <= 2 * length / grid.scale + 1e-300;
+        std::fabs(region.area() - std::fabs(signedArea(ring))) <= 2 * length / scale + 1e-300;
     if (simple) {
       Path p = ring;
       if ((signedArea(p) < 0) != hole) std::reverse(p.begin(), p.end());
@@ -409,7 +413,8 @@ bool evenOddContains(const Paths& rings, Point p) { return (windingNumber(rings,
 // every edge midpoint of the inputs, our result and the expected result (disagreements sit next
 // to some edge of one of them). Points within `margin` of an input edge are skipped: there the
 // snapping to the grid may legitimately move the boundary.
-OracleVerdict judge(const Loaded& l, const PolygonSet& ours, double margin, std::uint64_t seed) {
+OracleVerdict judge(const Loaded& l, const PolygonSet& ours, double margin, std::uint64_t seed,
+                    std::size_t verticesPerRing = 500) {
   Paths inputs;
   for (const Operand& o : l.operands) {
     const Paths r = o.rings();
@@ -441,7 +446,7 @@ OracleVerdict judge(const Loaded& l, const PolygonSet& ours, double margin, std:
   const double radii[] = {2 * margin, 16 * margin};
   for (const Paths* set : allRings) {
     for (const Path& ring : *set) {
-      const std::size_t stride = std::max<std::size_t>(1, ring.size() / 500);
+      const std::size_t stride = std::max<std::size_t>(1, ring.size() / verticesPerRing);
       for (std::size_t i = 0; i < ring.size(); i += stride) {
         const Point a = ring[i];
         const Point b = ring[(i + 1) % ring.size()];
@@ -478,15 +483,31 @@ OracleVerdict judge(const Loaded& l, const PolygonSet& ours, double margin, std:
 
 // --- the report at the end ---
 
+// The counts of one suite in one mode, printed and recorded as test properties.
 struct Tally {
   int run = 0;
   int agree = 0;       // matches the suite and the oracle
-  int suiteWrong = 0;  // listed in suite_errors.txt: we match the oracle, not the suite
+  int suiteWrong = 0;  // listed (suite_errors.txt, fitted_grid_disagreements.txt): we match the
+                       // oracle, the suite does not
   int failed = 0;
+  // Fitted grid: |our area - exact area| / exact union area of the operands, the worst case where
+  // 1e-6 is the tolerance; the worst error over the documented bound anywhere; the cases where
+  // that bound exceeds 1e-6 of the union area.
+  double worstRelative = 0;
+  std::string worstCase;
+  double worstOfBound = 0;
+  std::string floored;
 };
-std::map<std::string, Tally>& tallies() {
-  static std::map<std::string, Tally> t;
-  return t;
+
+// Failed assertions so far in the running test (one test runs all cases of a suite).
+int failedParts() {
+  const ::testing::TestResult* r =
+      ::testing::UnitTest::GetInstance()->current_test_info()->result();
+  int failed = 0;
+  for (int i = 0; i < r->total_part_count(); ++i) {
+    failed += r->GetTestPartResult(i).failed() ? 1 : 0;
+  }
+  return failed;
 }
 
 class Report : public ::testing::Environment {
@@ -498,13 +519,6 @@ class Report : public ::testing::Environment {
     std::cout << "\n[conformance] suite_errors.txt lists " << suiteErrors().size()
               << " case(s) whose expected result is wrong (see VERDICTS.md)\n";
   }
-  void TearDown() override {
-    for (const auto& [suite, t] : tallies()) {
-      std::cout << "[conformance] " << suite << ": " << t.run << " run, " << t.agree
-                << " agree with the suite, " << t.suiteWrong
-                << " suite wrong (we match the oracle), " << t.failed << " failed\n";
-    }
-  }
 };
 const auto* const kReport = ::testing::AddGlobalTestEnvironment(new Report);
 
@@ -514,8 +528,25 @@ std::uint64_t fnv1a(const std::string& s) {
   return h;
 }
 
-void runCase(const Case& c) {
-  Tally& tally = tallies()[c.suite];
+// Valid for GIS consumers as printed (GEOS reads the %.17g doubles): the result itself and
+// snap-rounded onto a step of 1/256 of the data's extent (coordinates in these suites range from
+// 1e-3 to 1e6).
+void expectValidAsPrinted(const PolygonSet& result) {
+  EXPECT_EQ(testing::geosValidityProblem(result), "");
+  if (result.empty()) return;
+  double lo = INFINITY, hi = -INFINITY;
+  for (const Path& ring : result.toPaths()) {
+    for (const Point& p : ring) {
+      lo = std::min({lo, p.x, p.y});
+      hi = std::max({hi, p.x, p.y});
+    }
+  }
+  const double step = std::exp2(std::floor(std::log2(std::max(hi - lo, 1e-300) / 256)));
+  EXPECT_EQ(testing::geosValidityProblem(roundTo(result, step)), "") << "step " << step;
+}
+
+void runCase(const Case& c, Tally& tally) {
+  const int failuresBefore = failedParts();
   ++tally.run;
   const Loaded l = load(c);
   const double scale = chooseScale(l);
@@ -580,20 +611,7 @@ void runCase(const Case& c) {
     EXPECT_GT(v.samples, 0u) << "the oracle had no sample point";
   }
   EXPECT_EQ(v.oursWrong, 0u) << "our result disagrees with the exact winding-number oracle";
-  // Valid for GIS consumers as printed: the result itself and snap-rounded onto a step of 1/256
-  // of the data's extent (coordinates in these suites range from 1e-3 to 1e6).
-  EXPECT_EQ(testing::geosValidityProblem(ours.result), "");
-  if (!ours.result.empty()) {
-    double lo = INFINITY, hi = -INFINITY;
-    for (const Path& ring : ourRings) {
-      for (const Point& p : ring) {
-        lo = std::min({lo, p.x, p.y});
-        hi = std::max({hi, p.x, p.y});
-      }
-    }
-    const double step = std::exp2(std::floor(std::log2(std::max(hi - lo, 1e-300) / 256)));
-    EXPECT_EQ(testing::geosValidityProblem(roundTo(ours.result, step)), "") << "step " << step;
-  }
+  expectValidAsPrinted(ours.result);
   if (suiteErrors().count(c.id()) > 0) {
     // Listed as a suite error (evidence in VERDICTS.md): we must still match the oracle, and
     // still differ from the suite, or the entry is stale.
@@ -603,7 +621,7 @@ void runCase(const Case& c) {
     EXPECT_TRUE(areaMatches) << "area differs from the suite's expectation";
     EXPECT_TRUE(countsMatch) << "polygon or ring count differs from the suite's expectation";
   }
-  if (::testing::Test::HasFailure()) {
+  if (failedParts() > failuresBefore) {
     ++tally.failed;
   } else if (suiteErrors().count(c.id()) > 0) {
     ++tally.suiteWrong;
@@ -612,17 +630,301 @@ void runCase(const Case& c) {
   }
 }
 
-std::string caseName(const ::testing::TestParamInfo<Case>& info) { return info.param.testName; }
+// --- the coordinates as given, on the library's default fitted grid ---
+//
+// Every case runs a second time with no grid chosen by the test: each core call fits its own grid
+// to its operands (Grid::fitted(), docs/algorithm.md "Grid"). Judged by
+//  (a) the exact area of the region the input doubles define (testing::exactRegionArea: exact
+//      rationals, no snapping): ours within 1e-6 of the exact area of the union of all operands,
+//      or within the documented snapping bound where that is larger (thin operands, see
+//      kRelativeTolerance), and within the documented bound always;
+//  (b) the exact winding-number samples of judge() and GEOS validity as printed;
+//  (c) the suite's expected area (same tolerance) and polygon and ring counts; where we differ,
+//      the case is listed in fitted_grid_disagreements.txt with the reason, and the test checks
+//      that the exact area sides with us.
 
-class PolygonClippingE2e : public ::testing::TestWithParam<Case> {};
-TEST_P(PolygonClippingE2e, Case) { runCase(GetParam()); }
-INSTANTIATE_TEST_SUITE_P(Conformance, PolygonClippingE2e,
-                         ::testing::ValuesIn(defaultCases(kPolygonClipping)), caseName);
+constexpr double kRelativeTolerance = 1e-6;
 
-class MartinezGeneric : public ::testing::TestWithParam<Case> {};
-TEST_P(MartinezGeneric, Case) { runCase(GetParam()); }
-INSTANTIATE_TEST_SUITE_P(Conformance, MartinezGeneric, ::testing::ValuesIn(defaultCases(kMartinez)),
-                         caseName);
+const std::set<std::string>& fittedDisagreements() {
+  static const std::set<std::string> ids =
+      readList(fs::path(ROICLIP_CONFORMANCE_DIR) / "fitted_grid_disagreements.txt");
+  return ids;
+}
+
+// The operands as winding counters for testing::exactRegionArea(): one per operand under
+// even-odd (martinez), else one per ring (polygon_clipping: outer minus holes, orientation
+// ignored, the polygons of a feature unioned), in the operands' order.
+struct Counters {
+  std::vector<Paths> paths;
+  std::vector<std::size_t> first;  // per operand: its first counter
+};
+
+Counters windingCounters(const Loaded& l) {
+  Counters c;
+  for (const Operand& o : l.operands) {
+    c.first.push_back(c.paths.size());
+    if (o.evenOdd) {
+      c.paths.push_back(o.rings());
+      continue;
+    }
+    for (const Paths& polygon : o.polygons) {
+      for (const Path& ring : polygon) c.paths.push_back({ring});
+    }
+  }
+  return c;
+}
+
+// Whether operand o covers a point whose winding numbers around o's counters are w[0], w[1], ...
+// (the same reading as Operand::contains()).
+bool covers(const Operand& o, const long long* w) {
+  if (o.evenOdd) return (w[0] & 1) != 0;
+  for (const Paths& polygon : o.polygons) {
+    bool in = !polygon.empty() && w[0] != 0;
+    for (std::size_t h = 1; h < polygon.size() && in; ++h) in = w[h] == 0;
+    if (in) return true;
+    w += polygon.size();
+  }
+  return false;
+}
+
+// Exact area of the operation `op` folded over the operands as given.
+double exactArea(const Loaded& l, const Counters& c, ClipOp op) {
+  std::vector<const Paths*> inputs;
+  for (const Paths& p : c.paths) inputs.push_back(&p);
+  return testing::exactRegionArea(inputs, [&](const std::vector<long long>& w) {
+    return l.fold(op, [&](std::size_t i) { return covers(l.operands[i], w.data() + c.first[i]); });
+  });
+}
+
+// ROICLIP_CONFORMANCE_OFFSET="dx dy" moves every case (operands and expected result, each
+// coordinate rounded once) before the fitted-grid run: the same checks far from the origin.
+void move(Loaded& l, Point d) {
+  const auto move = [d](std::vector<Paths>& polygons) {
+    for (Paths& polygon : polygons) {
+      for (Path& ring : polygon) {
+        for (Point& p : ring) p += d;
+      }
+    }
+  };
+  for (Operand& o : l.operands) move(o.polygons);
+  move(l.expected);
+}
+
+void applyOffset(Loaded& l) {
+  const char* env = std::getenv("ROICLIP_CONFORMANCE_OFFSET");
+  if (env == nullptr) return;
+  std::istringstream in(env);
+  Point d(0);
+  in >> d.x >> d.y;
+  move(l, d);
+}
+
+void runFittedCase(const Case& c, Tally& tally) {
+  const int failuresBefore = failedParts();
+  ++tally.run;
+  Loaded l = load(c);
+  applyOffset(l);
+  Paths inputs;
+  for (const Operand& o : l.operands) {
+    const Paths r = o.rings();
+    inputs.insert(inputs.end(), r.begin(), r.end());
+  }
+  const Ours ours = computeOurs(l, Grid::fitted());
+  const double ourArea = ours.result.area();
+
+  // The grid of the case's first call: fitted to all operands, so every later call of the fold
+  // (on a part of the same box) is at least as fine. A vertex moves by at most half a step per
+  // axis, delta = sqrt(2) / (2 scale) in all, in each of the `snaps` calls; the area of the
+  // result then moves by at most sum over input edges (2 delta length + pi delta^2) per call
+  // (docs/algorithm.md, "Grid"; the boundary of every intermediate result lies on the input
+  // edges), plus the output rounding: half an ulp of the largest coordinate along our perimeter.
+  const double scale = resolveGrid(Grid::fitted(), inputs).scale;
+  const double delta = std::sqrt(2.0) / (2 * scale);
+  double maxAbs = 0;
+  for (const Path& ring : inputs) {
+    for (Point p : ring) maxAbs = std::max({maxAbs, std::fabs(p.x), std::fabs(p.y)});
+  }
+  const Paths ourRings = ours.result.toPaths();
+  const double bound = ours.snaps * (2 * delta * totalLength(inputs) +
+                                     M_PI * delta * delta * double(vertexCount(inputs))) +
+                       totalLength(ourRings) * std::ldexp(maxAbs, -52);
+
+  // (a) The exact areas of the input as given. Relative to the exact union of the operands: the
+  // snapping error scales with the operands (their boundary times a step), not with the result,
+  // which may be empty or a sliver of them. The floor, the documented bound, exceeds 1e-6 of the
+  // union only for operands thinner than about 1/2000 of the box (the bound is about
+  // perimeter x extent x 2^-30); an empty result of non-empty operands needs no floor.
+  const Counters counters = windingCounters(l);
+  const double exact = exactArea(l, counters, l.operation.op);
+  const double unionArea = exactArea(l, counters, ClipOp::Union);
+  const double tolerance = std::max(kRelativeTolerance * unionArea, bound);
+  const double error = std::fabs(ourArea - exact);
+  const double relative = unionArea > 0 ? error / unionArea : (error > 0 ? INFINITY : 0.0);
+  const bool floored = kRelativeTolerance * unionArea < bound;
+  if (floored) {
+    tally.floored += " " + c.id();
+  } else if (relative >= tally.worstRelative) {
+    tally.worstRelative = relative;
+    tally.worstCase = c.id();
+  }
+  tally.worstOfBound = std::max(tally.worstOfBound, bound > 0 ? error / bound : 0.0);
+
+  // (c) The suite, by the same tolerance, and the counts of what is wider than the shift.
+  const double shift = ours.snaps / scale;
+  const double wantArea = expectedArea(l.expected);
+  const bool areaMatches = std::fabs(ourArea - wantArea) <= tolerance;
+  const bool suiteAreaRight = std::fabs(wantArea - exact) <= tolerance;
+  // Counts as in runCase, against the canonical form of the expected region (on its own fitted
+  // grid) or against the file as written: both are the suite's region, and where the suite
+  // leaves a gap narrower than a grid step between two of its vertices (a notch's mouth), the
+  // canonical form pinches it into a hole touching the outer ring while our result, whose
+  // crossings come from the snapped inputs, may keep it open.
+  const PolygonSet canonical = canonicalRegion(l.expected, Grid::fitted());
+  PolygonSet asWritten;
+  for (const Paths& polygon : l.expected) {
+    if (polygon.empty()) continue;
+    asWritten.polygons.push_back({polygon[0], Paths(polygon.begin() + 1, polygon.end())});
+  }
+  const Counts ourCounts = substantialCounts(ours.result, shift);
+  const Counts expectedCounts = substantialCounts(canonical, shift);
+  const Counts writtenCounts = substantialCounts(asWritten, shift);
+  const bool countsMatch = ourCounts == expectedCounts || ourCounts == writtenCounts;
+  // Samples stay 4 shifts away from the input edges, plus the output rounding (half an ulp per
+  // coordinate), which far from the origin exceeds the grid step.
+  const double margin = 4 * (shift + std::ldexp(maxAbs, -52));
+  const OracleVerdict v = judge(l, ours.result, margin, fnv1a(c.id()), 100);
+
+  std::ostringstream info;
+  info.precision(17);
+  info << c.id() << " (fitted grid, scale " << scale << ", " << ours.snaps
+       << " snap(s)): area ours " << ourArea << " exact " << exact << " expected " << wantArea
+       << "; union of the operands " << unionArea << "; |ours - exact| " << error << " (relative "
+       << relative << "), tolerance " << tolerance << " (documented bound " << bound
+       << "); polygons ours " << ourCounts.polygons << " expected " << expectedCounts.polygons
+       << " (as written " << writtenCounts.polygons << "), rings ours " << ourCounts.rings
+       << " expected " << expectedCounts.rings << " (as written " << writtenCounts.rings
+       << "); oracle: " << v.samples << " samples, ours wrong at " << v.oursWrong
+       << ", expected wrong at " << v.expectedWrong;
+  if (v.oursWrong > 0) {
+    info << " (first ours wrong at " << v.firstOursWrong.x << "," << v.firstOursWrong.y << ")";
+  }
+  SCOPED_TRACE(info.str());
+  if (std::getenv("ROICLIP_CONFORMANCE_VERBOSE") != nullptr) {
+    std::cout << info.str() << "\nours: " << io::toGeoJson(ours.result);
+  }
+
+  EXPECT_LE(error, tolerance) << "our area differs from the exact area of the input as given";
+  EXPECT_LE(error, bound) << "our area is outside the documented snapping bound";
+  if (!inputs.empty() && (!l.expected.empty() || !ourRings.empty())) {
+    EXPECT_GT(v.samples, 0u) << "the oracle had no sample point";
+  }
+  EXPECT_EQ(v.oursWrong, 0u) << "our result disagrees with the exact winding-number oracle";
+  expectValidAsPrinted(ours.result);
+  const bool listed = fittedDisagreements().count(c.id()) > 0;
+  if (listed) {
+    EXPECT_FALSE(areaMatches && countsMatch)
+        << "listed in fitted_grid_disagreements.txt but we now agree with the suite";
+    if (!areaMatches) {
+      EXPECT_FALSE(suiteAreaRight) << "the exact area sides with the suite";
+    }
+  } else {
+    EXPECT_TRUE(areaMatches) << "area differs from the suite's expectation (exact area "
+                             << (suiteAreaRight ? "agrees with the suite" : "agrees with us")
+                             << ")";
+    EXPECT_TRUE(countsMatch) << "polygon or ring count differs from the suite's expectation "
+                             << "(oracle samples where the suite is wrong: " << v.expectedWrong
+                             << ")";
+  }
+  if (failedParts() > failuresBefore) {
+    ++tally.failed;
+  } else if (listed) {
+    ++tally.suiteWrong;
+  } else {
+    ++tally.agree;
+  }
+}
+
+// One test per suite and mode over all its cases (each case is named in its failure messages):
+// the suites' 233 cases as separate CTest entries cost far more in process start-ups (under ASan,
+// 30 s against 2 s) than the cases themselves. ROICLIP_CONFORMANCE_CASE=text runs only the cases
+// whose "suite/case/operation" contains the text.
+void runSuite(const char* suite, bool fitted) {
+  Tally t;
+  const char* only = std::getenv("ROICLIP_CONFORMANCE_CASE");
+  for (const Case& c : defaultCases(suite)) {
+    if (only != nullptr && c.id().find(only) == std::string::npos) continue;
+    fitted ? runFittedCase(c, t) : runCase(c, t);
+  }
+  std::cout << "[conformance] " << suite
+            << (fitted ? " on the fitted grid: " : " on a fixed grid: ") << t.run << " run, "
+            << t.run - t.failed << " passed (" << t.agree << " agree with the suite, "
+            << t.suiteWrong << " listed: the suite is wrong), " << t.failed << " failed";
+  if (fitted) {
+    std::cout << "; worst |area - exact| / union area " << t.worstRelative << " (" << t.worstCase
+              << "), worst error / documented bound " << t.worstOfBound
+              << "; judged by the documented bound (it exceeds 1e-6 x union):"
+              << (t.floored.empty() ? " none" : t.floored);
+    ::testing::Test::RecordProperty("worst_relative_error", str(t.worstRelative));
+    ::testing::Test::RecordProperty("worst_relative_error_case", t.worstCase);
+    ::testing::Test::RecordProperty("worst_error_over_documented_bound", str(t.worstOfBound));
+  }
+  std::cout << "\n";
+  ::testing::Test::RecordProperty("cases_run", t.run);
+  ::testing::Test::RecordProperty("cases_passed", t.run - t.failed);
+  ::testing::Test::RecordProperty("cases_listed_suite_wrong", t.suiteWrong);
+  if (only == nullptr) {
+    EXPECT_GE(t.run, 60) << "conformance data missing under " << kSuites;
+  }
+}
+
+// Conformance.*: every case snapped to one grid chosen by the test (runCase);
+// ConformanceFittedGrid.*: the coordinates as given on the default grid (runFittedCase).
+TEST(Conformance, PolygonClippingE2e) { runSuite(kPolygonClipping, false); }
+TEST(Conformance, MartinezGeneric) { runSuite(kMartinez, false); }
+TEST(ConformanceFittedGrid, PolygonClippingE2e) { runSuite(kPolygonClipping, true); }
+TEST(ConformanceFittedGrid, MartinezGeneric) { runSuite(kMartinez, true); }
+
+// The documented limit of the output rounding (docs/algorithm.md, "Grid", Output: rings may
+// touch or overlap as doubles, which only snap rounding avoids), met by two suite cases moved
+// away from the origin (ROICLIP_CONFORMANCE_OFFSET): exact points closer than the doubles there
+// round to one double, so the printed result repeats a vertex or holds a ring of two points, and
+// GEOS rejects it. What stays guaranteed: the area (within 1e-6 of the union, against the exact
+// area of the moved input) and roundTo()'s valid result. When the raw result becomes valid (the
+// core drops or snap-rounds such points), this test says so.
+TEST(ConformanceFittedGrid, OutputRoundingLimitFarFromOrigin) {
+  struct Moved {
+    const char* name;
+    const char* op;
+    Point offset;
+    const char* rawProblem;  // the start of GEOS's reason today
+  };
+  const Moved cases[] = {
+      {"right-sweep-events-change-ordering", "union", {1000, -2000}, "Self-intersection"},
+      {"issue-61", "union", {6e4, -2e4}, "Too few points"},
+  };
+  for (const Moved& m : cases) {
+    const fs::path dir = kSuites / kPolygonClipping / m.name;
+    const Case c{kPolygonClipping,
+                 m.name,
+                 m.op,
+                 dir / "args.geojson",
+                 dir / (std::string(m.op) + ".geojson"),
+                 0};
+    SCOPED_TRACE(c.id());
+    Loaded l = load(c);
+    move(l, m.offset);
+    const PolygonSet result = computeOurs(l, Grid::fitted()).result;
+    const Counters counters = windingCounters(l);
+    const double exact = exactArea(l, counters, l.operation.op);
+    EXPECT_NEAR(result.area(), exact, kRelativeTolerance * exactArea(l, counters, ClipOp::Union));
+    const std::string raw = testing::geosValidityProblem(result);
+    EXPECT_EQ(raw.rfind(m.rawProblem, 0), 0u)
+        << "the raw result as printed: \"" << raw.substr(0, 80)
+        << "\"; if it is valid now, this limit is gone: update the test and docs";
+    const double step = std::ldexp(1.0, -20);  // 1e-6 of these coordinates' magnitude
+    EXPECT_EQ(testing::geosValidityProblem(roundTo(result, step)), "");
+  }
+}
 
 // The lists name real cases (a typo would otherwise hide a failure or excuse nothing), and
 // the suites are where they should be.
@@ -635,6 +937,39 @@ TEST(ConformanceLists, NameExistingCases) {
   for (const std::string& id : knownFailures()) EXPECT_EQ(ids.count(id), 1u) << id;
   for (const std::string& id : suiteErrors()) EXPECT_EQ(ids.count(id), 1u) << id;
   for (const std::string& id : knownFailures()) EXPECT_EQ(suiteErrors().count(id), 0u) << id;
+  for (const std::string& id : fittedDisagreements()) EXPECT_EQ(ids.count(id), 1u) << id;
+}
+
+// The topology claims of fitted_grid_disagreements.txt, from the cases' own vertices by exact
+// orientation (sample points cannot decide them: the slivers are thinner than an ulp).
+TEST(ConformanceLists, FittedGridTopologyByExactOrientation) {
+  const auto ring = [](const char* name, std::size_t feature) {
+    const fs::path args = kSuites / kPolygonClipping / name / "args.geojson";
+    return io::readFeatures(args.string(), {true}).at(feature).polygons.at(0).at(0);
+  };
+  using testing::orientation;
+  {  // issue-68-1: A = P Q R, B = P S T U V (two lobes); Q is on A's side of P S, not on it.
+    const Path a = ring("issue-68-1", 0), b = ring("issue-68-1", 1);
+    const Point p = a[0], q = a[1], r = a[2], s = b[1], t = b[2];
+    ASSERT_EQ(b[0], p);
+    EXPECT_EQ(orientation(p, s, q), 1);
+    EXPECT_EQ(orientation(p, s, r), 1);
+    EXPECT_EQ(orientation(p, s, t), -1);
+    EXPECT_LT(testing::distanceToSegment(q, p, s), 1e-14);
+  }
+  {  // right-sweep-events-change-ordering: A = a1 a2 a3, B = B1 B2 B3 B4 B5 with B3 = a3.
+    const Path a = ring("right-sweep-events-change-ordering", 0);
+    const Path b = ring("right-sweep-events-change-ordering", 1);
+    ASSERT_EQ(a[2], b[2]);
+    ASSERT_EQ(a[0], b[4]);
+    // a2 beyond B's edge B2 B3, away from the lobe B3 B4; B2 beyond A's edge a2 a3, away from A:
+    // the wedge between the two edges belongs to neither.
+    EXPECT_EQ(orientation(b[1], b[2], a[1]), 1);
+    EXPECT_EQ(orientation(b[1], b[2], b[3]), -1);
+    EXPECT_EQ(orientation(a[2], a[1], b[1]), 1);
+    EXPECT_EQ(orientation(a[2], a[1], a[0]), -1);
+    EXPECT_LT(testing::distanceToSegment(a[1], b[1], b[2]), 1e-11);  // 7e-12 beyond B2
+  }
 }
 
 }  // namespace

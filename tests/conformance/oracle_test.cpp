@@ -3,6 +3,7 @@
 // exactness where doubles fail, winding numbers with both orientations, points on the boundary.
 #include <cmath>
 #include <optional>
+#include <random>
 
 #include <gtest/gtest.h>
 
@@ -65,6 +66,49 @@ TEST(Oracle, ProximityFindsOnlyNearbyEdges) {
   EXPECT_FALSE(near.near(Point(50, 0.6)));
   EXPECT_FALSE(near.near(Point(50, 50)));
   EXPECT_FALSE(near.near(Point(-3, -3)));
+}
+
+// The fast exact area gives exactSlabArea()'s double bit for bit: random self-crossing rings on a
+// coarse grid (many shared vertices, touching and overlapping edges, vertical edges), the same
+// moved off any binary grid and far from the origin (every double decision near a tie), and both
+// under every fill rule and operation.
+TEST(Oracle, RegionAreaEqualsTheSlabAreaBitForBit) {
+  std::mt19937 rng(20261202u);
+  const FillRule rules[] = {FillRule::EvenOdd, FillRule::NonZero, FillRule::Positive};
+  const ClipOp ops[] = {ClipOp::Intersection, ClipOp::Union, ClipOp::Difference, ClipOp::Xor};
+  int checked = 0, nonZero = 0;
+  for (int round = 0; round < 24; ++round) {
+    Paths a = {randomPolygon(rng, 3 + round % 9, 6), randomPolygon(rng, 3 + round % 4, 6)};
+    Paths b = {randomGridWalk(rng, 4 + round % 7, 1, 6)};
+    if (round % 3 == 1) {  // decimal offsets: coordinates off every binary grid
+      for (Paths* paths : {&a, &b}) {
+        for (Path& ring : *paths) {
+          for (Point& p : ring) p = Point(1e6 + p.x * 0.1, -3e5 + p.y * 0.3);
+        }
+      }
+    } else if (round % 3 == 2) {  // nearly collinear: one ulp off
+      for (Point& p : a[0]) p.y = std::nextafter(p.y * 1e-3 + 41.0, 1e300);
+    }
+    // Every fill rule with every operation twice over the rounds.
+    const FillRule rule = rules[round % 3];
+    const ClipOp op = ops[(round / 3) % 4];
+    const auto in = [&](const std::vector<long long>& w) {
+      return combine(op, isFilled(rule, w[0]), isFilled(rule, w[1]));
+    };
+    const double slow = exactSlabArea({&a, &b}, in);
+    const double fast = exactRegionArea({&a, &b}, in);
+    EXPECT_EQ(fast, slow) << "round " << round << " " << describe(a) << " " << describe(b);
+    ++checked;
+    nonZero += slow != 0 ? 1 : 0;
+  }
+  EXPECT_EQ(checked, 24);
+  EXPECT_GT(nonZero, 15);
+  // A unit square exactly: 1; the same square as two triangles sharing the diagonal: still 1.
+  const Paths square = {{{0, 0}, {1, 0}, {1, 1}, {0, 1}}};
+  const Paths halves = {{{0, 0}, {1, 0}, {1, 1}}, {{0, 0}, {1, 1}, {0, 1}}};
+  const auto any = [](const std::vector<long long>& w) { return w[0] != 0; };
+  EXPECT_EQ(exactRegionArea({&square}, any), 1.0);
+  EXPECT_EQ(exactRegionArea({&halves}, any), 1.0);
 }
 
 }  // namespace

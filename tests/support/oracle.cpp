@@ -5,6 +5,7 @@
 
 #include <cstdlib>
 #include <fstream>
+#include <optional>
 
 #include <boost/multiprecision/cpp_int.hpp>
 
@@ -214,6 +215,167 @@ double exactSlabArea(const std::vector<const Paths*>& inputs,
       }
     }
   }
+  return area.convert_to<double>();
+}
+
+namespace {
+
+using Rational = boost::multiprecision::cpp_rational;
+
+// An input edge of exactRegionArea(), left to right (vertical edges bound no area).
+struct RegionEdge {
+  Point a, b;  // a.x < b.x
+  int operand, dir;
+  std::size_t first = 0, last = 0;  // active in the slabs [first, last) of the x list
+  // Bound on |double y(xm) - exact y(xm)| per unit of the slab's midpoint error, and absolute.
+  double slope = 0, yError = 0;
+};
+
+// The exact y of edge e at x.
+Rational yAt(const RegionEdge& e, const Rational& x) {
+  if (x == Rational(e.a.x)) return Rational(e.a.y);
+  if (x == Rational(e.b.x)) return Rational(e.b.y);
+  return Rational(e.a.y) + (Rational(e.b.y) - Rational(e.a.y)) * (x - Rational(e.a.x)) /
+                               (Rational(e.b.x) - Rational(e.a.x));
+}
+
+// x of the proper crossing of e and f (each one's endpoints strictly on both sides of the
+// other), if any; touching and overlapping edges meet at an endpoint, whose x is listed anyway.
+std::optional<Rational> properCrossingX(const RegionEdge& e, const RegionEdge& f) {
+  if (orientation(e.a, e.b, f.a) * orientation(e.a, e.b, f.b) >= 0) return std::nullopt;
+  if (orientation(f.a, f.b, e.a) * orientation(f.a, f.b, e.b) >= 0) return std::nullopt;
+  const Rational ax(e.a.x), ay(e.a.y), rx = Rational(e.b.x) - ax, ry = Rational(e.b.y) - ay;
+  const Rational cx(f.a.x), cy(f.a.y), sx = Rational(f.b.x) - cx, sy = Rational(f.b.y) - cy;
+  const Rational t = ((cx - ax) * sy - (cy - ay) * sx) / (rx * sy - ry * sx);
+  return ax + t * rx;
+}
+
+}  // namespace
+
+double exactRegionArea(const std::vector<const Paths*>& inputs,
+                       const std::function<bool(const std::vector<long long>&)>& inside) {
+  constexpr double kEps = 0x1p-52;
+  std::vector<RegionEdge> edges;
+  std::vector<double> vertexXs;
+  for (std::size_t k = 0; k < inputs.size(); ++k) {
+    for (const Path& path : *inputs[k]) {
+      for (std::size_t i = 0; i < path.size(); ++i) {
+        const Point a = path[i], b = path[(i + 1) % path.size()];
+        vertexXs.push_back(a.x);
+        if (a.x < b.x) edges.push_back({a, b, int(k), +1});
+        if (a.x > b.x) edges.push_back({b, a, int(k), -1});
+      }
+    }
+  }
+  // Every x where the order of the edges may change: vertices and proper crossings.
+  std::vector<Rational> xs;
+  std::sort(vertexXs.begin(), vertexXs.end());
+  vertexXs.erase(std::unique(vertexXs.begin(), vertexXs.end()), vertexXs.end());
+  for (double x : vertexXs) xs.emplace_back(x);
+  std::vector<std::size_t> byLeft(edges.size());
+  for (std::size_t i = 0; i < edges.size(); ++i) byLeft[i] = i;
+  std::sort(byLeft.begin(), byLeft.end(),
+            [&](std::size_t i, std::size_t j) { return edges[i].a.x < edges[j].a.x; });
+  for (std::size_t n = 0; n < byLeft.size(); ++n) {
+    const RegionEdge& e = edges[byLeft[n]];
+    const double eLo = std::min(e.a.y, e.b.y), eHi = std::max(e.a.y, e.b.y);
+    for (std::size_t m = n + 1; m < byLeft.size() && edges[byLeft[m]].a.x <= e.b.x; ++m) {
+      const RegionEdge& f = edges[byLeft[m]];
+      if (std::max(f.a.y, f.b.y) < eLo || std::min(f.a.y, f.b.y) > eHi) continue;
+      if (auto x = properCrossingX(e, f)) xs.push_back(std::move(*x));
+    }
+  }
+  std::sort(xs.begin(), xs.end());
+  xs.erase(std::unique(xs.begin(), xs.end()), xs.end());
+  std::vector<double> xd(xs.size());
+  for (std::size_t i = 0; i < xs.size(); ++i) xd[i] = xs[i].convert_to<double>();
+
+  for (RegionEdge& e : edges) {
+    // a.x and b.x are listed exactly; their doubles are themselves.
+    e.first = std::size_t(std::lower_bound(xs.begin(), xs.end(), Rational(e.a.x)) - xs.begin());
+    e.last = std::size_t(std::lower_bound(xs.begin(), xs.end(), Rational(e.b.x)) - xs.begin());
+    const double dy = e.b.y - e.a.y;
+    e.slope = std::fabs(dy / (e.b.x - e.a.x));
+    e.yError = 8 * kEps * (std::fabs(e.a.y) + std::fabs(e.b.y) + std::fabs(dy));
+  }
+  std::sort(byLeft.begin(), byLeft.end(),
+            [&](std::size_t i, std::size_t j) { return edges[i].first < edges[j].first; });
+
+  // Per edge: the sign with which it bounds the region in the current run of slabs, and where
+  // the run began.
+  std::vector<int> runSign(edges.size(), 0);
+  std::vector<std::size_t> runStart(edges.size(), 0);
+  Rational area = 0;
+  const auto closeRun = [&](std::size_t e, std::size_t end) {
+    if (runSign[e] == 0) return;
+    const Rational &x0 = xs[runStart[e]], &x1 = xs[end];
+    area += runSign[e] * (x1 - x0) * (yAt(edges[e], x0) + yAt(edges[e], x1)) / 2;
+  };
+
+  std::vector<std::size_t> active;
+  std::size_t nextEdge = 0;
+  struct Cut {
+    std::size_t edge;
+    double y, error;
+  };
+  std::vector<Cut> cuts;
+  // y at the slab's exact midpoint, per edge, computed only where the doubles cannot tell.
+  std::vector<std::optional<Rational>> exactY(edges.size());
+  std::vector<long long> w(inputs.size(), 0);
+  for (std::size_t i = 0; i + 1 < xs.size(); ++i) {
+    for (std::size_t e : active) {
+      if (edges[e].last == i) closeRun(e, i);
+    }
+    active.erase(std::remove_if(active.begin(), active.end(),
+                                [&](std::size_t e) { return edges[e].last == i; }),
+                 active.end());
+    for (; nextEdge < byLeft.size() && edges[byLeft[nextEdge]].first == i; ++nextEdge) {
+      active.push_back(byLeft[nextEdge]);
+    }
+    // Order at the slab's midpoint xm (no two edges cross inside the slab). The double xmd is
+    // within 4 eps |xm| of xm; each edge's double y within yError + slope * that of its y(xm).
+    const double xmd = 0.5 * (xd[i] + xd[i + 1]);
+    const double xError = 4 * kEps * std::max(std::fabs(xd[i]), std::fabs(xd[i + 1])) + 0x1p-1074;
+    const Rational xm = (xs[i] + xs[i + 1]) / 2;
+    cuts.clear();
+    for (std::size_t e : active) {
+      const RegionEdge& edge = edges[e];
+      const double y =
+          edge.a.y + (edge.b.y - edge.a.y) * ((xmd - edge.a.x) / (edge.b.x - edge.a.x));
+      cuts.push_back({e, y, edge.yError + 2 * edge.slope * xError});
+      exactY[e].reset();
+    }
+    const auto exact = [&](const Cut& c) -> const Rational& {
+      if (!exactY[c.edge]) exactY[c.edge] = yAt(edges[c.edge], xm);
+      return *exactY[c.edge];
+    };
+    std::sort(cuts.begin(), cuts.end(), [&](const Cut& p, const Cut& q) {
+      const double error = p.error + q.error;
+      if (std::isfinite(error) && std::fabs(p.y - q.y) > error) return p.y < q.y;
+      return exact(p) < exact(q);
+    });
+    // Edge c bounds the region from above where the interval below it is filled, from below
+    // where the interval above it is: sign f(below) - f(above). Outside every edge w = 0.
+    std::fill(w.begin(), w.end(), 0);
+    bool below = false;
+    for (std::size_t c = 0; c < cuts.size(); ++c) {
+      const RegionEdge& edge = edges[cuts[c].edge];
+      w[std::size_t(edge.operand)] += edge.dir;
+      const bool above = c + 1 < cuts.size() && inside(w);
+      const int sign = int(below) - int(above);
+      const std::size_t e = cuts[c].edge;
+      if (i == edge.first) {
+        runSign[e] = sign;
+        runStart[e] = i;
+      } else if (sign != runSign[e]) {
+        closeRun(e, i);
+        runSign[e] = sign;
+        runStart[e] = i;
+      }
+      below = above;
+    }
+  }
+  for (std::size_t e : active) closeRun(e, xs.size() - 1);
   return area.convert_to<double>();
 }
 
