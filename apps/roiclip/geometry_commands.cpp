@@ -52,15 +52,18 @@ constexpr const char* kFeaturesHelp =
     "up, clockwise on a y-down image); --orientation opencv writes cv::findContours' order.\n"
     "'-' reads standard input or writes standard output. Warnings (stderr): a z coordinate\n"
     "is dropped; snapping to a fixed --grid moved a vertex by more than 1/4 grid step;\n"
-    "degenerate rings were ignored (the summary properties count them: \"ignoredRings\",\n"
-    "and for the CLIP operand of clip \"ignoredClipRings\").\n"
+    "degenerate rings were ignored (fewer than 3 distinct points, or all points on one line:\n"
+    "no area; the summary properties count them: \"ignoredRings\", and for the CLIP operand of\n"
+    "clip \"ignoredClipRings\"; --strict refuses them).\n"
     "\n";
 
 constexpr const char* kClipLinesHelp =
     "LINES: GeoJSON LineString, MultiLineString, or a Feature, FeatureCollection or\n"
     "GeometryCollection of them, or {\"paths\": [[[x, y], ...], ...]} (a polyline whose last\n"
     "point repeats its first is a loop). REGION: as for `clip` (closed; its boundary counts as\n"
-    "inside). Output: GeoJSON MultiLineString, properties \"length\" (px) and \"lines\".\n"
+    "inside). Output: GeoJSON MultiLineString, properties \"length\" (px) and \"lines\", and\n"
+    "\"ignoredClipRings\" when REGION has degenerate rings (fewer than 3 distinct points, or\n"
+    "all on one line: ignored with a warning; --strict refuses them).\n"
     "\n"
     "Example: a line from (-5, 5) via (5, 5) to (5, 15) and the square [0, 10]^2\n"
     "  roiclip clip-lines line.geojson square.geojson\n"
@@ -205,8 +208,9 @@ void GeometryCommands::addCoreOptions(CLI::App* cmd) {
                   "200 to 320 bytes while it runs)")
       ->capture_default_str();
   cmd->add_flag("--strict", strict_,
-                "refuse rings with fewer than 3 distinct points and lines with fewer than 2 "
-                "points (by default they are ignored and counted as \"ignoredRings\")");
+                "refuse degenerate rings (fewer than 3 distinct points, or all points on one "
+                "line) and lines with fewer than 2 points (by default such rings are ignored and "
+                "counted: \"ignoredRings\", \"ignoredClipRings\")");
 }
 
 namespace {
@@ -279,6 +283,8 @@ void GeometryCommands::execute() const {
     for (const io::Feature& f : result) ignored += f.ignoredRings;
     return ignored;
   };
+  const io::DegenerateRings degenerate =
+      strict_ ? io::DegenerateRings::Refuse : io::DegenerateRings::Count;
   const auto writeOptions = [](const Common& options) {
     return io::WriteOptions{io::parseRingOrientation(options.orientation.c_str()), -1};
   };
@@ -287,7 +293,7 @@ void GeometryCommands::execute() const {
     const FillRule rule = parseFillRule(s.rule.c_str());
     const auto input = readRegions(s.input, s.inputFormat, s.dissolve, strict_, warnings);
     snapCheck(io::allRings(input), s.input);
-    auto result = io::simplifyFeatures(input, io::sourceName(s.input), rule, options_);
+    auto result = io::simplifyFeatures(input, io::sourceName(s.input), rule, options_, degenerate);
     ignoredWarning(subjectIgnored(result), s.input, Operand::None);
     roundResults(result, input, s.roundTo);
     printWarnings(warnings);
@@ -304,11 +310,15 @@ void GeometryCommands::execute() const {
     const auto clipRegion = readRegions(c.clip, c.inputFormat, c.dissolve, strict_, warnings);
     snapCheck(io::allRings(subject), c.subject);
     snapCheck(io::allRings(clipRegion), c.clip);
-    auto result = io::clipFeatures(op, subject, io::sourceName(c.subject), clipRegion,
-                                   io::sourceName(c.clip), subjectRule, clipRule, options_);
+    auto result =
+        io::clipFeatures(op, subject, io::sourceName(c.subject), clipRegion, io::sourceName(c.clip),
+                         subjectRule, clipRule, options_, degenerate);
     ignoredWarning(subjectIgnored(result), c.subject, Operand::Subject);
-    // Every result counts the whole clip operand's; the first says it for all.
-    ignoredWarning(result.empty() ? 0 : result.front().ignoredClipRings, c.clip, Operand::Clip);
+    // Every result counts the whole clip operand's; without a subject feature there is none to
+    // carry the count, but the file still has them.
+    ignoredWarning(result.empty() ? io::countDegenerateRings(clipRegion, options_)
+                                  : result.front().ignoredClipRings,
+                   c.clip, Operand::Clip);
     roundResults(result, subject, c.roundTo);
     printWarnings(warnings);
     io::writeFeatures(result, c.output, io::parseFormat(c.format.c_str()), writeOptions(c));
@@ -328,8 +338,17 @@ void GeometryCommands::execute() const {
     snapCheck(region, l.region);
     const Paths result = clipLinesInputs(lines, io::sourceName(l.lines), region,
                                          io::sourceName(l.region), rule, part, options_);
+    // The region's degenerate rings on the call's grid (the one clipLines() fits to both).
+    std::size_t ignored = 0;
+    try {
+      ignored = io::checkDegenerateRings(region, resolveGrid(options_.grid, lines, region),
+                                         Operand::Clip, degenerate);
+    } catch (const InvalidInputError& e) {
+      throw nameSource(e, {{Operand::Clip, io::sourceName(l.region)}});
+    }
+    ignoredWarning(ignored, l.region, Operand::Clip);
     printWarnings(warnings);
-    io::writeLines(result, l.output, io::parseFormat(l.format.c_str()));
+    io::writeLines(result, l.output, io::parseFormat(l.format.c_str()), -1, ignored);
   }
 }
 

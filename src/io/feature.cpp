@@ -65,9 +65,11 @@ Feature withIdentity(const PolygonSet& set, const Feature& input, std::size_t ig
   return out;
 }
 
-// The feature's rings that the call on `grid` (the call's grid, resolved) ignores.
-std::size_t ignored(const Paths& rings, const Options& options, const Paths& other = {}) {
-  return countDegeneratePaths(rings, resolveGrid(options.grid, rings, other));
+// The feature's rings (of `operand`) that the call on `rings` and `other` ignores: counted, or
+// with DegenerateRings::Refuse an error.
+std::size_t ignored(const Paths& rings, const Options& options, Operand operand,
+                    DegenerateRings mode, const Paths& other = {}) {
+  return checkDegenerateRings(rings, resolveGrid(options.grid, rings, other), operand, mode);
 }
 
 // "1/256 px" (or "1/0.5 px" for a fractional scale).
@@ -93,6 +95,30 @@ RingOrientation parseRingOrientation(const char* name) {
   if (s == "opencv") return RingOrientation::OpenCv;
   throw InvalidInputError("unknown ring orientation \"" + std::string(name) +
                           "\" (rfc7946, opencv)");
+}
+
+std::size_t checkDegenerateRings(const Paths& rings, const Grid& grid, Operand operand,
+                                 DegenerateRings mode) {
+  const std::size_t count = countDegeneratePaths(rings, grid);
+  if (mode == DegenerateRings::Count || count == 0) return count;
+  for (std::size_t i = 0; i < rings.size(); ++i) {
+    if (countDegeneratePaths({rings[i]}, grid) == 0) continue;
+    InputLocation location;
+    location.operand = operand;
+    location.path = i;
+    throw InvalidInputError(location, detail::distinctPointsUpTo3(rings[i]) < 3
+                                          ? detail::kTooFewPoints
+                                          : "ring has no area (all its points on one line)");
+  }
+  return 0;  // not reached: countDegeneratePaths() counts each path on its own
+}
+
+std::size_t countDegenerateRings(const std::vector<Feature>& features, const Options& options) {
+  std::size_t count = 0;
+  for (const Feature& feature : features) {
+    count += ignored(allRings({feature}), options, Operand::None, DegenerateRings::Count);
+  }
+  return count;
 }
 
 Paths allRings(const std::vector<Feature>& features) {
@@ -150,7 +176,7 @@ InvalidInputError nameSource(const InvalidInputError& e, std::initializer_list<S
 
 std::vector<Feature> simplifyFeatures(const std::vector<Feature>& features,
                                       const std::string& source, FillRule rule,
-                                      const Options& options) {
+                                      const Options& options, DegenerateRings degenerate) {
   std::vector<Feature> out;
   out.reserve(features.size());
   std::size_t offset = 0;
@@ -158,7 +184,8 @@ std::vector<Feature> simplifyFeatures(const std::vector<Feature>& features,
     try {
       const Paths rings = allRings({feature});
       const PolygonSet set = simplify(rings, rule, options);
-      out.push_back(withIdentity(set, feature, ignored(rings, options)));
+      out.push_back(
+          withIdentity(set, feature, ignored(rings, options, Operand::Subject, degenerate)));
     } catch (const InvalidInputError& e) {
       throw nameSource(e, {{Operand::Subject, source}}, offset);
     }
@@ -170,7 +197,8 @@ std::vector<Feature> simplifyFeatures(const std::vector<Feature>& features,
 std::vector<Feature> clipFeatures(ClipOp op, const std::vector<Feature>& subject,
                                   const std::string& subjectSource,
                                   const std::vector<Feature>& clip, const std::string& clipSource,
-                                  FillRule subjectRule, FillRule clipRule, const Options& options) {
+                                  FillRule subjectRule, FillRule clipRule, const Options& options,
+                                  DegenerateRings degenerate) {
   // The union of the clip features: each one's region under clipRule (the union of nothing with
   // it), its rings then read together under NonZero. One feature gives the region its rings make
   // under clipRule, as when every ring is clipped against at once.
@@ -181,7 +209,7 @@ std::vector<Feature> clipFeatures(ClipOp op, const std::vector<Feature>& subject
       const Paths rings = allRings({feature});
       const PolygonSet set =
           roiclip::clip(ClipOp::Union, {}, rings, FillRule::NonZero, clipRule, options);
-      ignoredClipRings += ignored(rings, options);
+      ignoredClipRings += ignored(rings, options, Operand::Clip, degenerate);
       const Paths united = set.toPaths();
       region.insert(region.end(), united.begin(), united.end());
     } catch (const InvalidInputError& e) {
@@ -197,7 +225,9 @@ std::vector<Feature> clipFeatures(ClipOp op, const std::vector<Feature>& subject
       const Paths rings = allRings({feature});
       const PolygonSet set =
           roiclip::clip(op, rings, region, subjectRule, FillRule::NonZero, options);
-      out.push_back(withIdentity(set, feature, ignored(rings, options, region), ignoredClipRings));
+      out.push_back(withIdentity(set, feature,
+                                 ignored(rings, options, Operand::Subject, degenerate, region),
+                                 ignoredClipRings));
     } catch (const InvalidInputError& e) {
       throw nameSource(e, {{Operand::Subject, subjectSource}, {Operand::Clip, clipSource}}, offset);
     }
@@ -291,8 +321,10 @@ std::string formatFeatures(const std::vector<Feature>& features, Format format,
                                : featuresToGeoJson(features, options);
 }
 
-std::string formatLines(const Paths& lines, Format format, int indent) {
-  return format == Format::Wkt ? linesToWkt(lines) : linesToGeoJson(lines, indent);
+std::string formatLines(const Paths& lines, Format format, int indent,
+                        std::size_t ignoredClipRings) {
+  return format == Format::Wkt ? linesToWkt(lines)
+                               : linesToGeoJson(lines, indent, ignoredClipRings);
 }
 
 void writeText(const std::string& text, const std::string& file) {
@@ -310,8 +342,9 @@ void writeFeatures(const std::vector<Feature>& features, const std::string& file
   writeText(formatFeatures(features, format, options), file);
 }
 
-void writeLines(const Paths& lines, const std::string& file, Format format, int indent) {
-  writeText(formatLines(lines, format, indent), file);
+void writeLines(const Paths& lines, const std::string& file, Format format, int indent,
+                std::size_t ignoredClipRings) {
+  writeText(formatLines(lines, format, indent, ignoredClipRings), file);
 }
 
 Path orientRing(const Path& ring, bool outer, RingOrientation orientation) {

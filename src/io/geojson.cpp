@@ -356,7 +356,7 @@ void writeGeoJson(const PolygonSet& set, const std::string& file, int indent,
   writeFileAtomically(file, toGeoJson(set, indent, orientation));
 }
 
-std::string linesToGeoJson(const Paths& lines, int indent) {
+std::string linesToGeoJson(const Paths& lines, int indent, std::size_t ignoredClipRings) {
   json coordinates = json::array();
   double length = 0.0;
   for (const Path& line : lines) {
@@ -367,9 +367,11 @@ std::string linesToGeoJson(const Paths& lines, int indent) {
     }
     coordinates.push_back(std::move(points));
   }
+  json properties = {{"length", length}, {"lines", lines.size()}};
+  if (ignoredClipRings > 0) properties["ignoredClipRings"] = ignoredClipRings;
   return oneFeatureCollection(
-      {{"type", "MultiLineString"}, {"coordinates", std::move(coordinates)}},
-      {{"length", length}, {"lines", lines.size()}}, indent);
+      {{"type", "MultiLineString"}, {"coordinates", std::move(coordinates)}}, std::move(properties),
+      indent);
 }
 
 void writeLinesGeoJson(const Paths& lines, const std::string& file, int indent) {

@@ -20,6 +20,20 @@ namespace roiclip::io::detail {
   throw InvalidInputError(location, (where.empty() ? "" : where + ": ") + problem);
 }
 
+// How many distinct points `path` has, counting up to 3 (a ring needs 3). Rings are short in
+// practice and this runs once per ring: a quadratic count is fine and keeps the order untouched.
+inline std::size_t distinctPointsUpTo3(const Path& path) {
+  std::size_t count = 0;
+  for (std::size_t i = 0; i < path.size() && count < 3; ++i) {
+    bool seen = false;
+    for (std::size_t j = 0; j < i && !seen; ++j) seen = path[j] == path[i];
+    if (!seen) ++count;
+  }
+  return count;
+}
+
+inline constexpr const char* kTooFewPoints = "ring has fewer than 3 distinct points";
+
 // Keeps the flat path index (the core's messages use it) and the count of dropped z values while
 // a reader walks its input, and checks each ring or line as it is finished.
 class RingChecker {
@@ -44,8 +58,8 @@ class RingChecker {
   // A closed ring: a repeated closing point dropped, then at least 3 distinct points required.
   void finishRing(Path& path, const std::string& at) {
     if (path.size() > 1 && path.front() == path.back()) path.pop_back();
-    if (!options_.allowDegenerateRings && distinctPoints(path) < 3) {
-      fail(source_, at, "ring has fewer than 3 distinct points");
+    if (!options_.allowDegenerateRings && distinctPointsUpTo3(path) < 3) {
+      fail(source_, at, kTooFewPoints);
     }
     ++pathCount_;
   }
@@ -72,18 +86,6 @@ class RingChecker {
   [[nodiscard]] const std::string& source() const { return source_; }
 
  private:
-  static std::size_t distinctPoints(const Path& path) {
-    // Rings are short in practice and this runs once per ring: a quadratic count is fine and
-    // keeps the original order untouched.
-    std::size_t count = 0;
-    for (std::size_t i = 0; i < path.size() && count < 3; ++i) {
-      bool seen = false;
-      for (std::size_t j = 0; j < i && !seen; ++j) seen = path[j] == path[i];
-      if (!seen) ++count;
-    }
-    return count;
-  }
-
   const std::string& source_;
   const ReadOptions& options_;
   std::size_t pathCount_ = 0;

@@ -258,6 +258,76 @@ TEST_F(Cli, DegenerateRingsAreCounted) {
                  "ring has fewer than 3 distinct points");
 }
 
+// A clip operand's degenerate rings are warned about even when there is no subject feature (no
+// result to carry the count): the warning is per operand file.
+TEST_F(Cli, ClipOperandRingsAreWarnedAboutWithoutSubjectFeatures) {
+  const fs::path empty = dir_ / "empty.geojson";
+  std::ofstream(empty) << R"({"type":"FeatureCollection","features":[]})";
+  const std::string degenerate = "'" + kData + "degenerate_ring.geojson'";
+  const CliRun r = run("clip '" + empty.string() + "' " + degenerate);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_TRUE(json::parse(r.out).at("features").empty()) << r.out;
+  EXPECT_NE(r.err.find("degenerate_ring.geojson: ignored 1 clip ring with fewer than 3 distinct "
+                       "points or no area"),
+            std::string::npos)
+      << r.err;
+  EXPECT_EQ(r.err.find("subject"), std::string::npos) << r.err;
+  // A ring of 3 points on one line, the same.
+  const fs::path flat = dir_ / "flat.wkt";
+  std::ofstream(flat) << "MULTIPOLYGON (((0 0, 10 0, 10 10, 0 0)), ((5 5, 6 6, 7 7, 5 5)))";
+  const CliRun onALine = run("clip '" + empty.string() + "' '" + flat.string() + "'");
+  ASSERT_EQ(onALine.exitCode, 0) << onALine.err;
+  EXPECT_NE(onALine.err.find("flat.wkt: ignored 1 clip ring"), std::string::npos) << onALine.err;
+  expectBadInput(run("clip --strict '" + empty.string() + "' " + degenerate),
+                 "degenerate_ring.geojson", "ring has fewer than 3 distinct points");
+  expectBadInput(run("clip --strict '" + empty.string() + "' '" + flat.string() + "'"), "flat.wkt",
+                 "path 1: ring has no area (all its points on one line)");
+}
+
+// Degenerate means "all points on one line on the call's grid" (README, countDegeneratePaths()):
+// 3 or more distinct points on one line, or a sliver that snapping flattens, are counted, warned
+// about and refused by --strict just as rings of fewer than 3 distinct points are.
+TEST_F(Cli, RingsOnOneLineAreCountedAndRefusedLikeTooFewPoints) {
+  const fs::path flat = dir_ / "flat.wkt";
+  std::ofstream(flat) << "MULTIPOLYGON (((0 0, 10 0, 10 10, 0 0)), ((5 5, 6 6, 7 7, 5 5)))";
+  const std::string file = "'" + flat.string() + "'";
+  const std::string square = "'" + kData + "square.geojson'";
+  const CliRun r = run("simplify " + file);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(properties(r.out).at("ignoredRings"), 1);
+  EXPECT_NE(r.err.find("flat.wkt: ignored 1 ring with fewer than 3 distinct points or no area"),
+            std::string::npos)
+      << r.err;
+  const std::string noArea = "path 1: ring has no area (all its points on one line)";
+  expectBadInput(run("simplify --strict " + file), "flat.wkt", noArea);
+  expectBadInput(run("clip --strict " + file + " " + square), "flat.wkt", noArea);
+  expectBadInput(run("clip --strict " + square + " " + file), "flat.wkt", noArea);
+  // The path index is the file's flat one: here the flat ring is the second feature's ring 1.
+  const fs::path two = dir_ / "two.geojson";
+  std::ofstream(two) << R"({"type":"FeatureCollection","features":[
+      {"type":"Feature","properties":{"n":1},"geometry":{"type":"Polygon","coordinates":
+       [[[0,0],[10,0],[10,10],[0,0]]]}},
+      {"type":"Feature","properties":{"n":2},"geometry":{"type":"MultiPolygon","coordinates":
+       [[[[0,0],[10,0],[10,10],[0,0]]], [[[5,5],[6,6],[7,7],[5,5]]]]}}]})";
+  expectBadInput(run("simplify --strict '" + two.string() + "'"), "two.geojson",
+                 "path 2: ring has no area");
+  // A sliver (area 0.5) that the grid of 1 unit per px puts on one line: counted on that grid,
+  // refused on it, and neither on the default fitted grid.
+  const fs::path sliver = dir_ / "sliver.wkt";
+  std::ofstream(sliver)
+      << "MULTIPOLYGON (((0 0, 10 0, 10 10, 0 0)), ((0 20, 10 20, 5 20.1, 0 20)))";
+  const std::string sliverFile = "'" + sliver.string() + "'";
+  const CliRun fitted = run("simplify " + sliverFile);
+  ASSERT_EQ(fitted.exitCode, 0) << fitted.err;
+  EXPECT_FALSE(properties(fitted.out).contains("ignoredRings")) << fitted.out;
+  EXPECT_EQ(run("simplify --strict " + sliverFile).exitCode, 0);
+  const CliRun coarse = run("simplify --grid 1 " + sliverFile);
+  ASSERT_EQ(coarse.exitCode, 0) << coarse.err;
+  EXPECT_EQ(properties(coarse.out).at("ignoredRings"), 1);
+  EXPECT_NE(coarse.err.find("sliver.wkt: ignored 1 ring"), std::string::npos) << coarse.err;
+  expectBadInput(run("simplify --strict --grid 1 " + sliverFile), "sliver.wkt", noArea);
+}
+
 // The work budget: exit code 6, one line naming the limit and the flag, no output.
 TEST_F(Cli, MaxCrossingsExitsWithCode6) {
   const std::string args = "'" + kData + "bowtie.json' '" + kData + "roi.geojson'";
@@ -366,6 +436,43 @@ TEST_F(Cli, ClipLinesInsideAndOutsideOfASquare) {
   EXPECT_DOUBLE_EQ(properties(outside.out).at("length").get<double>(), 5.0 + 5.0 + 2.0 + 2.0);
   EXPECT_EQ(properties(outside.out).at("lines").get<int>(), 4);
   EXPECT_EQ(run("clip-lines --part Outside " + files).out, outside.out);  // any case
+}
+
+// clip-lines counts REGION's degenerate rings (the clip operand's: "ignoredClipRings" and a
+// warning); --strict refuses them, both kinds.
+TEST_F(Cli, ClipLinesCountsAndRefusesDegenerateRegionRings) {
+  const std::string lines = "'" + kData + "lines_cross.geojson'";
+  const CliRun clean = run("clip-lines " + lines + " '" + kData + "square.geojson'");
+  ASSERT_EQ(clean.exitCode, 0) << clean.err;
+  EXPECT_FALSE(properties(clean.out).contains("ignoredClipRings")) << clean.out;
+  // degenerate_ring.geojson: a triangle inside [0, 10]^2 and a ring of 2 distinct points.
+  const std::string degenerate = "'" + kData + "degenerate_ring.geojson'";
+  const CliRun r = run("clip-lines " + lines + " " + degenerate);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(properties(r.out).at("ignoredClipRings"), 1);
+  EXPECT_GT(properties(r.out).at("lines").get<int>(), 0);  // the triangle still clips
+  EXPECT_NE(r.err.find("degenerate_ring.geojson: ignored 1 clip ring with fewer than 3 distinct "
+                       "points or no area (--strict refuses them)"),
+            std::string::npos)
+      << r.err;
+  const fs::path flat = dir_ / "flat.wkt";
+  std::ofstream(flat) << "MULTIPOLYGON (((0 0, 10 0, 10 10, 0 10, 0 0)), ((5 5, 6 6, 7 7, 5 5)), "
+                         "((1 1, 2 2, 1 1)))";
+  const std::string flatFile = "'" + flat.string() + "'";
+  const CliRun both = run("clip-lines " + lines + " " + flatFile);
+  ASSERT_EQ(both.exitCode, 0) << both.err;
+  EXPECT_EQ(properties(both.out).at("ignoredClipRings"), 2);
+  EXPECT_EQ(lineCoordinates(both.out), lineCoordinates(clean.out));  // they contribute nothing
+  EXPECT_NE(both.err.find("flat.wkt: ignored 2 clip rings"), std::string::npos) << both.err;
+  expectBadInput(run("clip-lines --strict " + lines + " " + degenerate), "degenerate_ring.geojson",
+                 "polygon 1, ring 0 (path 1): ring has fewer than 3 distinct points");
+  // The reader refuses the ring of 2 distinct points first; alone, the flat one is refused on
+  // the grid.
+  expectBadInput(run("clip-lines --strict " + lines + " " + flatFile), "flat.wkt",
+                 "ring has fewer than 3 distinct points");
+  std::ofstream(flat) << "MULTIPOLYGON (((0 0, 10 0, 10 10, 0 10, 0 0)), ((5 5, 6 6, 7 7, 5 5)))";
+  expectBadInput(run("clip-lines --strict " + lines + " " + flatFile), "flat.wkt",
+                 "path 1: ring has no area (all its points on one line)");
 }
 
 TEST_F(Cli, ClipLinesFillRuleAndOutputFile) {

@@ -294,5 +294,88 @@ TEST(DegenerateRings, EveryReaderKeepsThemAndTheOperationsCountThem) {
   }
 }
 
+// Degenerate means "all points on one line on the call's grid" (countDegeneratePaths()), so
+// counting and refusing take the same rings: fewer than 3 distinct points, 3 or more on one
+// line, and a ring that only snapping puts on one line.
+TEST(DegenerateRings, RefuseTakesExactlyTheRingsCountCounts) {
+  const Path square = {{0, 0}, {10, 0}, {10, 10}, {0, 10}};
+  const Path twoPoints = {{20, 20}, {21, 21}, {20, 20}};
+  const Path onALine = {{30, 30}, {31, 31}, {32, 32}};
+  const Path thin = {{0, 0}, {10, 0}, {5, 0.1}};  // area 0.5, but on one line at 1 unit per px
+  const Grid fine = resolveGrid(Grid::fitted(), {square, thin});
+  EXPECT_EQ(checkDegenerateRings({square, thin}, fine, Operand::Subject), 0u);
+  EXPECT_EQ(checkDegenerateRings({square, thin}, fine, Operand::Subject, DegenerateRings::Refuse),
+            0u);
+  EXPECT_EQ(
+      checkDegenerateRings({square, twoPoints, onALine, thin}, Grid::fixed(1), Operand::Subject),
+      3u);
+  struct Case {
+    Paths rings;
+    std::size_t path;
+    const char* problem;
+  };
+  for (const Case& c :
+       {Case{{square, twoPoints, onALine}, 1, "ring has fewer than 3 distinct points"},
+        Case{{square, onALine, twoPoints}, 1, "ring has no area (all its points on one line)"},
+        Case{{square, square, thin}, 2, "ring has no area (all its points on one line)"}}) {
+    try {
+      checkDegenerateRings(c.rings, Grid::fixed(1), Operand::Clip, DegenerateRings::Refuse);
+      ADD_FAILURE() << "not refused: path " << c.path;
+    } catch (const InvalidInputError& e) {
+      EXPECT_EQ(e.location().operand, Operand::Clip);
+      EXPECT_EQ(e.location().path, c.path);
+      EXPECT_EQ(e.problem(), c.problem);
+      EXPECT_EQ(std::string(e.what()), "clip path " + std::to_string(c.path) + ": " + c.problem);
+    }
+  }
+}
+
+// The feature-wise operations refuse with the file and the flat path index, in either operand,
+// and the clip operand's are refused (and counted) also without any subject feature.
+TEST(DegenerateRings, FeatureWiseOperationsRefuseThemNamingFileAndFlatPath) {
+  const std::string text =
+      R"({"type":"FeatureCollection","features":[
+          {"type":"Feature","properties":{"n":1},"geometry":{"type":"Polygon","coordinates":
+           [[[0,0],[10,0],[10,10],[0,10],[0,0]]]}},
+          {"type":"Feature","properties":{"n":2},"geometry":{"type":"MultiPolygon","coordinates":
+           [[[[20,0],[30,0],[30,10],[20,0]]], [[[40,0],[41,1],[42,2],[40,0]]]]}}]})";
+  const std::vector<Feature> features = parseAnyFeatures(text, "in");
+  ASSERT_EQ(features.size(), 2u);
+  // The strict reader keeps the flat ring (3 distinct points): the operations decide on the grid.
+  EXPECT_EQ(allRings(parseAnyFeatures(text, "in", Format::Auto, strictOptions())).size(), 3u);
+  const std::vector<Feature> simple = simplifyFeatures(features, "in", FillRule::EvenOdd);
+  EXPECT_EQ(simple[0].ignoredRings + simple[1].ignoredRings, 1u);
+  EXPECT_EQ(countDegenerateRings(features, {}), 1u);
+  const std::initializer_list<std::string> flat = {"in: path 2: ring has no area"};
+  expectInvalid(
+      [&] { simplifyFeatures(features, "in", FillRule::EvenOdd, {}, DegenerateRings::Refuse); },
+      flat);
+  const std::vector<Feature> square = {features[0]};
+  expectInvalid(
+      [&] {
+        clipFeatures(ClipOp::Intersection, features, "in", square, "clip", FillRule::EvenOdd,
+                     FillRule::EvenOdd, {}, DegenerateRings::Refuse);
+      },
+      flat);
+  EXPECT_NO_THROW(clipFeatures(ClipOp::Intersection, square, "subject", square, "clip",
+                               FillRule::EvenOdd, FillRule::EvenOdd, {}, DegenerateRings::Refuse));
+  // As the clip operand, with no subject feature at all: no result carries the count, which
+  // countDegenerateRings() gives; Refuse still refuses.
+  EXPECT_TRUE(clipFeatures(ClipOp::Intersection, {}, "subject", features, "in", FillRule::EvenOdd,
+                           FillRule::EvenOdd)
+                  .empty());
+  expectInvalid(
+      [&] {
+        clipFeatures(ClipOp::Intersection, {}, "subject", features, "in", FillRule::EvenOdd,
+                     FillRule::EvenOdd, {}, DegenerateRings::Refuse);
+      },
+      flat);
+  const std::vector<Feature> clipped =
+      clipFeatures(ClipOp::Intersection, square, "subject", features, "in", FillRule::EvenOdd,
+                   FillRule::EvenOdd);
+  ASSERT_EQ(clipped.size(), 1u);
+  EXPECT_EQ(clipped[0].ignoredClipRings, countDegenerateRings(features, {}));
+}
+
 }  // namespace
 }  // namespace roiclip::io

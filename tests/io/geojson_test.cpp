@@ -356,8 +356,15 @@ TEST(LinesToGeoJson, MultiLineStringWithLengthAndCountRoundTrips) {
   EXPECT_EQ(feature.at("geometry").at("coordinates")[2].size(), 3u);  // no point added or dropped
   EXPECT_DOUBLE_EQ(feature.at("properties").at("length").get<double>(), (5 + 6) + 2.25 + 2);
   EXPECT_EQ(feature.at("properties").at("lines").get<int>(), 3);
+  EXPECT_FALSE(feature.at("properties").contains("ignoredClipRings"));
   EXPECT_EQ(parseLines(linesToGeoJson(lines)), lines);
   EXPECT_EQ(parseLines(linesToGeoJson(lines, 2)), lines);
+  // The region's degenerate rings, when there are any, after the two.
+  const json counted = json::parse(linesToGeoJson(lines, -1, 2)).at("features")[0];
+  EXPECT_EQ(counted.at("properties").dump(),
+            json({{"length", (5 + 6) + 2.25 + 2}, {"lines", 3}, {"ignoredClipRings", 2}}).dump());
+  EXPECT_EQ(formatLines(lines, Format::GeoJson, -1, 2), linesToGeoJson(lines, -1, 2));
+  EXPECT_EQ(formatLines(lines, Format::Wkt, -1, 2), formatLines(lines, Format::Wkt));  // no props
 }
 
 TEST(LinesToGeoJson, NoLinesIsAnEmptyMultiLineString) {

@@ -33,7 +33,9 @@ struct ReadOptions {
   /// When true (the default), a ring with fewer than 3 distinct points, or a polyline with fewer
   /// than 2 points, is kept as it is: the core ignores it (it contributes nothing), and the
   /// feature-wise operations count it (Feature::ignoredRings). When false (the CLI's --strict),
-  /// such a ring or line is an InvalidInputError naming it.
+  /// such a ring or line is an InvalidInputError naming it. A ring of 3 or more distinct points
+  /// all on one line (no area) is a degenerate ring too, but whether its points lie on one line
+  /// is decided on the grid of the call that uses it: DegenerateRings::Refuse refuses those.
   bool allowDegenerateRings = true;
   /// When set, non-fatal findings are appended here: a third (z) coordinate, which every reader
   /// drops (roiclip is 2-D), gives one Warning per input. When null they are dropped silently.
@@ -82,6 +84,30 @@ struct Feature {
   std::size_t ignoredClipRings = 0;
 };
 
+/// What the feature-wise operations do with a degenerate ring: one that contributes nothing
+/// because, snapped to the call's grid, all its points lie on one line (fewer than 3 distinct
+/// points, or 3 or more on one line: no area; countDegeneratePaths()).
+enum class DegenerateRings {
+  Count,   ///< ignore it and count it (Feature::ignoredRings, Feature::ignoredClipRings)
+  Refuse,  ///< an InvalidInputError naming it (the CLI's --strict): "path P: ring has ..."
+};
+
+/// The rings of `rings` that countDegeneratePaths() counts on `grid` (the call's grid, resolved:
+/// resolveGrid()): how many with DegenerateRings::Count; with DegenerateRings::Refuse, 0, or an
+/// InvalidInputError at the first of them (location: `operand` and its index in `rings`; the
+/// problem "ring has fewer than 3 distinct points" or "ring has no area (all its points on one
+/// line)"; name its file with nameSource()).
+/// @throws InvalidInputError also as countDegeneratePaths().
+std::size_t checkDegenerateRings(const Paths& rings, const Grid& grid, Operand operand,
+                                 DegenerateRings mode = DegenerateRings::Count);
+
+/// How many rings of `features` are degenerate when each feature is one call on
+/// `options.grid`, as simplifyFeatures() and the clip operand of clipFeatures() take them: the
+/// sum of simplifyFeatures()' ignoredRings, and the ignoredClipRings of every result of
+/// clipFeatures() with `features` as the clip operand (also when there is no subject feature,
+/// hence no result to carry it).
+std::size_t countDegenerateRings(const std::vector<Feature>& features, const Options& options);
+
 /// Every ring of every polygon of `features` as one path set, in order (the core's input).
 Paths allRings(const std::vector<Feature>& features);
 
@@ -111,23 +137,29 @@ InvalidInputError nameSource(const InvalidInputError& e, std::initializer_list<S
 
 /// simplify() on each feature (its rings under `rule`): one result feature per input feature,
 /// in order, keeping its id and properties (a feature without properties gets "area" and
-/// "rings", as toFeature()).
-/// @throws InvalidInputError from the core, naming `source` and the flat path index.
+/// "rings", as toFeature()). Degenerate rings are counted (Feature::ignoredRings) or, with
+/// DegenerateRings::Refuse, refused.
+/// @throws InvalidInputError from the core, or for a degenerate ring with Refuse, naming
+///         `source` and the flat path index.
 std::vector<Feature> simplifyFeatures(const std::vector<Feature>& features,
                                       const std::string& source, FillRule rule,
-                                      const Options& options = {});
+                                      const Options& options = {},
+                                      DegenerateRings degenerate = DegenerateRings::Count);
 
 /// clip() of each subject feature (its rings under `subjectRule`) by the union of the clip
 /// features (each feature's rings under `clipRule`, then the union of all of them): one result
 /// per subject feature, in order, ids and properties kept as simplifyFeatures(). Each result
 /// counts the subject feature's degenerate rings (Feature::ignoredRings) and the clip operand's
-/// (Feature::ignoredClipRings).
-/// @throws InvalidInputError from the core, naming the file of the operand it concerns.
+/// (Feature::ignoredClipRings); with DegenerateRings::Refuse, a degenerate ring in either operand
+/// is an error (the clip operand's are looked at first, also when `subject` is empty).
+/// @throws InvalidInputError from the core, or for a degenerate ring with Refuse, naming the file
+///         of the operand it concerns and the flat path index.
 std::vector<Feature> clipFeatures(ClipOp op, const std::vector<Feature>& subject,
                                   const std::string& subjectSource,
                                   const std::vector<Feature>& clip, const std::string& clipSource,
                                   FillRule subjectRule, FillRule clipRule,
-                                  const Options& options = {});
+                                  const Options& options = {},
+                                  DegenerateRings degenerate = DegenerateRings::Count);
 
 /// How far snapping to a fixed grid moves input coordinates: the core rounds each coordinate to
 /// the nearest grid point (Grid::toUnits()), so a coordinate moves by up to half a grid step.
@@ -199,11 +231,15 @@ std::string formatFeatures(const std::vector<Feature>& features, Format format,
 void writeFeatures(const std::vector<Feature>& features, const std::string& file, Format format,
                    const WriteOptions& options = {});
 
-/// Polylines as text in `format` (GeoJson: linesToGeoJson(); Wkt: linesToWkt()).
-std::string formatLines(const Paths& lines, Format format, int indent = -1);
+/// Polylines as text in `format` (GeoJson: linesToGeoJson(), with the property
+/// "ignoredClipRings" when `ignoredClipRings` is non-zero: the region's degenerate rings, for
+/// clipLines() results; Wkt: linesToWkt(), which has no properties).
+std::string formatLines(const Paths& lines, Format format, int indent = -1,
+                        std::size_t ignoredClipRings = 0);
 
 /// formatLines() to `file` as writeFeatures() writes.
-void writeLines(const Paths& lines, const std::string& file, Format format, int indent = -1);
+void writeLines(const Paths& lines, const std::string& file, Format format, int indent = -1,
+                std::size_t ignoredClipRings = 0);
 
 /// `text` to `file` atomically, or to standard output when `file` is "-" or empty.
 /// @throws Error naming `file` (or "<stdout>") when it cannot be written.

@@ -6,6 +6,7 @@
 // coordinate is dropped (a Warning in ReadOptions::warnings). Files named "-" are standard input.
 #pragma once
 
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -91,9 +92,10 @@ void writeGeoJson(const PolygonSet& set, const std::string& file, int indent = -
 /// Polylines (e.g. clipLines() output) as GeoJSON text: a FeatureCollection with one Feature
 /// whose geometry is a MultiLineString (one line string per polyline, points as they are) and
 /// properties "length" (the total Euclidean length, in coordinate units, i.e. px) and "lines" (the
-/// number of polylines).
+/// number of polylines), then "ignoredClipRings" when `ignoredClipRings` is non-zero (how many
+/// rings of the region clipLines() took contributed nothing: checkDegenerateRings()).
 /// @param indent spaces per indentation level, or -1 for a single line.
-std::string linesToGeoJson(const Paths& lines, int indent = -1);
+std::string linesToGeoJson(const Paths& lines, int indent = -1, std::size_t ignoredClipRings = 0);
 
 /// Write linesToGeoJson(lines) to `file` atomically, as writeGeoJson().
 /// @throws Error when the file cannot be written.
