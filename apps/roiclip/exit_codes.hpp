@@ -31,7 +31,8 @@ inline constexpr ExitCode kExitCodes[] = {
     {kExitBadInput,
      "invalid input: unreadable or malformed file, NaN or non-numeric coordinate, a\n"
      "bounding box too large for doubles, a coordinate outside a fixed --grid's range, with\n"
-     "--strict a ring with fewer than 3 distinct points or a line with fewer than 2 points\n"
+     "--strict a degenerate ring (fewer than 3 distinct points, or all on one line) or a\n"
+     "line with fewer than 2 points\n"
      "(one line on stderr names the file and the problem; no output file is written)",
      "invalid input: input folder missing or unreadable, no images found, bad option value,\n"
      "bad --roi/--board/--config"},

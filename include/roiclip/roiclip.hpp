@@ -181,8 +181,10 @@ class PreparedRegion {
 
 /// How many of `paths` contribute nothing to any region: after snapping to `grid` (a resolved
 /// grid, resolveGrid(): the one the call fits to all its operands), all of a path's points lie
-/// on one line (fewer than 3 distinct points, spikes, zero area). Such paths are ignored by every
-/// operation; the CLI reports them as "ignoredRings".
+/// on one line (fewer than 3 distinct points, or a spike out and back along one line). Such paths
+/// are ignored by every operation; the CLI reports them as "ignoredRings". A ring that encloses
+/// no area without lying on one line (a bent spike A B C B A) is not counted: the core's
+/// winding numbers drop it all the same.
 /// @throws InvalidInputError as simplify() on NaN, infinity or a coordinate off the grid's range.
 std::size_t countDegeneratePaths(const Paths& paths, const Grid& grid);
 

@@ -58,8 +58,10 @@ TEST_F(Cli, HelpPrintsTheExitCodeTable) {
   const std::string geometry = exitCodesHelp(ExitCodesOf::Geometry);
   EXPECT_EQ(geometry.rfind("Exit codes:\n  0  success\n  1  command-line usage error\n", 0), 0u)
       << geometry;
-  EXPECT_NE(geometry.find("\n     --strict a ring with fewer than 3 distinct points"),
-            std::string::npos)
+  EXPECT_NE(
+      geometry.find(
+          "\n     --strict a degenerate ring (fewer than 3 distinct points, or all on one line)"),
+      std::string::npos)
       << geometry;
   EXPECT_NE(geometry.find("\n  6  the input needs more work than --max-crossings allows"),
             std::string::npos)
