@@ -71,35 +71,6 @@ double powerOfTen(int k) {
 // grid point round(v * s) gives v back.
 inline bool onDecimalLattice(double v, double s) { return roundUnits(v * s) / s == v; }
 
-// The smallest k from `k` to `limit` such that every coordinate of `paths` is the double nearest
-// a multiple of 10^-k (being one for k, it is one for every larger k), or limit + 1. A
-// non-finite coordinate gives limit + 1: the snapping reports it.
-int decimalsOf(const Paths& paths, int k, int limit, const double* powers) {
-  for (const Path& path : paths) {
-    for (const Point& p : path) {
-      for (const double v : {p.x, p.y}) {
-        if (!std::isfinite(v)) return limit + 1;
-        while (k <= limit && !onDecimalLattice(v, powers[k])) ++k;
-        if (k > limit) return k;
-      }
-    }
-  }
-  return k;
-}
-
-// The origin of one axis for scale s = 10^k: a grid point near the middle whose coordinate
-// (the double nearest it) multiplies back to it exactly, as Grid::toUnits and the output stage
-// compute origin * scale. About one in eight does not; NaN when none of the tries does.
-double decimalOrigin(double lo, double hi, double s) {
-  const double middle = middleUnits(lo, hi, s);
-  for (int i = 0; i < kOriginTries; ++i) {
-    const double units = middle + ((i & 1) != 0 ? -double((i + 1) / 2) : double(i / 2));
-    const double origin = units / s;
-    if (origin * s == units) return origin;
-  }
-  return NAN;
-}
-
 // The bits left in v - (its grid point's coordinate) over n coordinates, or'ed (without the
 // sign: -0.0 is a zero difference too): zero when scale s holds every one. One branch-free pass
 // (it vectorises). (u + kRound) - kRound rounds u = v * s to its integer n when |u| < 2^51; for
@@ -124,6 +95,43 @@ std::uint64_t offGridBits(const double* v, std::size_t n, double s) {
   }
   for (; i < n; ++i) a |= bitsOff(v[i]);
   return (a | b) & ~(std::uint64_t{1} << 63);
+}
+
+// The smallest k from `k` to `limit` such that every coordinate of `paths` is the double nearest
+// a multiple of 10^-k (being one for k, it is one for every larger k), or limit + 1. A
+// non-finite coordinate gives limit + 1: the snapping reports it. Blocks the current k holds
+// pass in one vectorised check (offGridBits); only a block that needs a larger k, or the end of
+// the search, is read one coordinate at a time.
+int decimalsOf(const Paths& paths, int k, int limit, const double* powers) {
+  constexpr std::size_t kBlock = 64;
+  for (const Path& path : paths) {
+    const double* v = path.empty() ? nullptr : &path.front().x;
+    const std::size_t n = 2 * path.size();
+    for (std::size_t start = 0; start < n; start += kBlock) {
+      const std::size_t end = std::min(n, start + kBlock);
+      if (offGridBits<false>(v + start, end - start, powers[k]) == 0) continue;
+      for (std::size_t i = start; i < end; ++i) {
+        if (!std::isfinite(v[i])) return limit + 1;
+        while (!onDecimalLattice(v[i], powers[k])) {
+          if (++k > limit) return k;
+        }
+      }
+    }
+  }
+  return k;
+}
+
+// The origin of one axis for scale s = 10^k: a grid point near the middle whose coordinate
+// (the double nearest it) multiplies back to it exactly, as Grid::toUnits and the output stage
+// compute origin * scale. About one in eight does not; NaN when none of the tries does.
+double decimalOrigin(double lo, double hi, double s) {
+  const double middle = middleUnits(lo, hi, s);
+  for (int i = 0; i < kOriginTries; ++i) {
+    const double units = middle + ((i & 1) != 0 ? -double((i + 1) / 2) : double(i / 2));
+    const double origin = units / s;
+    if (origin * s == units) return origin;
+  }
+  return NAN;
 }
 
 }  // namespace
@@ -157,6 +165,7 @@ Grid fitBinaryGrid(const Box& box) {
 }
 
 bool holdsExactly(const Grid& grid, const Paths& paths) {
+  constexpr std::size_t kBlock = 256;  // coordinates checked at once: data off the grid stops soon
   const double s = grid.scale;
   int exponent = 0;
   const bool powerOfTwo = std::frexp(s, &exponent) == 0.5;
@@ -164,10 +173,15 @@ bool holdsExactly(const Grid& grid, const Paths& paths) {
     static_assert(sizeof(Point) == 2 * sizeof(double), "a path is its coordinates in a row");
     const double* v = path.empty() ? nullptr : &path.front().x;
     const std::size_t n = 2 * path.size();
-    if ((powerOfTwo ? offGridBits<true>(v, n, s) : offGridBits<false>(v, n, s)) == 0) continue;
-    for (const Point& p : path) {  // the exact test (rare: only large units come here twice)
-      for (const double c : {p.x, p.y}) {
-        if (std::isfinite(c) && roundUnits(c * s) / s != c) return false;
+    for (std::size_t start = 0; start < n; start += kBlock) {
+      const std::size_t end = std::min(n, start + kBlock);
+      const std::size_t count = end - start;
+      if ((powerOfTwo ? offGridBits<true>(v + start, count, s)
+                      : offGridBits<false>(v + start, count, s)) == 0) {
+        continue;
+      }
+      for (std::size_t i = start; i < end; ++i) {  // the exact test (only large units pass here)
+        if (std::isfinite(v[i]) && roundUnits(v[i] * s) / s != v[i]) return false;
       }
     }
   }
