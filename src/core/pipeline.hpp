@@ -218,8 +218,9 @@ std::vector<InputEdge> snapRoundPieces(const Arrangement& arrangement, std::int6
 PolygonSet booleanGeneral(const Paths& subject, const Paths* clipPaths, const BooleanSpec& spec,
                           const Grid& grid);
 
-/// The bounding box of the finite vertices of some paths (resolveGrid(), PreparedRegion). NaN
-/// and infinity are skipped: the snapping reports them, naming the path and vertex.
+/// The bounding box of the finite coordinates of some paths (resolveGrid(), PreparedRegion). NaN
+/// coordinates and points with an infinite one are skipped (the other coordinate of a point
+/// with a NaN may count): the snapping reports them, naming the path and vertex.
 struct Box {
   double minX = INFINITY, maxX = -INFINITY, minY = INFINITY, maxY = -INFINITY;
   void add(const Paths& paths) {
