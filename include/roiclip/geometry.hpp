@@ -8,10 +8,14 @@
 //   round(coordinate * scale) - origin * scale (nearest integer, ties to even), and they must lie
 //   within +-Grid::kMaxUnits (2^30) of the origin. By default (Grid::fitted()) each call fits the
 //   grid to the bounding box of all its operands: the origin is a grid point near the box's
-//   centre and the scale the largest power of two that keeps the box inside that range. So any
-//   finite double input is accepted wherever it lies, integer (pixel) coordinates stay exact, and
-//   no coordinate moves by more than half a grid step, about 2^-31 of the box's larger side
-//   (docs/algorithm.md, "Grid", has the bound).
+//   centre and the scale the largest power of two that keeps the box inside that range; when
+//   that grid would move a coordinate but every coordinate is the double nearest a decimal with
+//   at most k decimals (as parsed from text: UTM 512345.6789, degrees 13.4049541), the scale is
+//   10^k instead (the smallest such k whose grid holds the box). So any finite double input is
+//   accepted wherever it lies, integer (pixel) and binary-fraction coordinates stay exact, such
+//   decimals are held as the decimals themselves (each moves by at most half an ulp, from the
+//   double to its decimal), and no other coordinate moves by more than half a grid step, about
+//   2^-31 of the box's larger side (docs/algorithm.md, "Grid", has the bound).
 //   Grid::fixed(scale) keeps one grid for every call (bit-identical snapping across calls;
 //   |coordinate * scale| <= 2^30). Every topological decision after snapping is exact.
 // - Output vertices are exact points (input vertices or crossings of input edges) rounded once:
@@ -74,9 +78,10 @@ struct Grid {
   /// Largest allowed |grid units| of a coordinate, counted from the origin.
   static constexpr std::int64_t kMaxUnits = std::int64_t{1} << 30;
   /// Grid units per coordinate unit; 0 (the default) means fitted: every call chooses the scale
-  /// and origin for its operands (a power of two, see the conventions). A fixed scale must be
-  /// positive and finite; a power of two keeps snapping exact for pixel and half-pixel
-  /// coordinates.
+  /// and origin for its operands (a power of two, or 10^k for decimal data, see the
+  /// conventions). A fixed scale must be positive and finite; a power of two keeps snapping exact
+  /// for pixel and half-pixel coordinates, and 10^k (k <= 22) for doubles nearest to decimals
+  /// with at most k decimals while |v| * 10^k <= 2^50.
   double scale = 0.0;
   /// The grid point units are counted from. It must lie on the grid (origin * scale an integer,
   /// of magnitude at most 2^100). Ignored while the grid is fitted.
@@ -114,7 +119,9 @@ inline std::optional<std::int64_t> Grid::toUnits(double v, double originCoordina
 }
 
 /// The grid a call with these operands snaps to: `grid` itself when it is fixed, else the grid
-/// fitted to the bounding box of every finite vertex of `subject` and `clip` together.
+/// fitted to the bounding box of every finite vertex of `subject` and `clip` together: the
+/// power-of-two grid when it holds every coordinate exactly, else the decimal grid (scale 10^k,
+/// the smallest k from 0 to 22) that does, if one fits the box, else the power-of-two grid.
 /// @throws InvalidInputError when a fixed grid is invalid (scale not positive and finite, origin
 ///         off the grid) or the box is too large for doubles (its side overflows).
 Grid resolveGrid(const Grid& grid, const Paths& subject, const Paths& clip = {});

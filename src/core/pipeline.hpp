@@ -7,6 +7,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include <roiclip/geometry.hpp>
@@ -226,11 +227,30 @@ PolygonSet roundToCountingPasses(const PolygonSet& region, double step, int& pas
 PolygonSet booleanGeneral(const Paths& subject, const Paths* clipPaths, const BooleanSpec& spec,
                           const Grid& grid);
 
-/// The bounding box of the finite vertices of some paths (resolveGrid(), PreparedRegion). NaN
-/// and infinity are skipped: the snapping reports them, naming the path and vertex.
+/// The bounding box of the finite coordinates of some paths (resolveGrid(), PreparedRegion). NaN
+/// coordinates and points with an infinite one are skipped (the other coordinate of a point
+/// with a NaN may count): the snapping reports them, naming the path and vertex.
 struct Box {
   double minX = INFINITY, maxX = -INFINITY, minY = INFINITY, maxY = -INFINITY;
   void add(const Paths& paths) {
+    // One branch-free pass (it vectorises): NaN fails every comparison, so it leaves the box as
+    // it is. Only an infinite coordinate needs the second pass, which skips its point.
+    double lo[2] = {minX, minY}, hi[2] = {maxX, maxY};
+    for (const Path& path : paths) {
+      static_assert(sizeof(Point) == 2 * sizeof(double), "a path is its coordinates in a row");
+      const double* v = path.empty() ? nullptr : &path.front().x;
+      for (std::size_t i = 0, n = 2 * path.size(); i < n; i += 2) {
+        for (int axis = 0; axis < 2; ++axis) {
+          lo[axis] = v[i + axis] < lo[axis] ? v[i + axis] : lo[axis];
+          hi[axis] = v[i + axis] > hi[axis] ? v[i + axis] : hi[axis];
+        }
+      }
+    }
+    if (std::isfinite(lo[0]) && std::isfinite(lo[1]) && std::isfinite(hi[0]) &&
+        std::isfinite(hi[1])) {
+      minX = lo[0], minY = lo[1], maxX = hi[0], maxY = hi[1];
+      return;
+    }
     for (const Path& path : paths) {
       for (const Point& p : path) {
         if (!std::isfinite(p.x) || !std::isfinite(p.y)) continue;
@@ -243,6 +263,26 @@ struct Box {
   }
   [[nodiscard]] bool empty() const { return !(minX <= maxX); }
 };
+
+/// The grids a fitted grid resolves to (grid.cpp; resolveGrid() and PreparedRegion use them).
+/// The power-of-two grid fitted to a box: the largest s = 2^e with s * side <= 2^31 - 8, the
+/// origin a grid point near the centre. Throws InvalidInputError when the box's side overflows.
+Grid fitBinaryGrid(const Box& box);
+/// True when `grid` holds every finite coordinate v of `paths` exactly: its grid point
+/// n = round(v * scale) gives v back, the double nearest n / scale (for a power of two: v * scale
+/// is an integer).
+bool holdsExactly(const Grid& grid, const Paths& paths);
+/// Which decimal grid fitDecimalGrid() picks among those that hold the data.
+enum class DecimalPick {
+  Coarsest,  ///< the smallest k (the decimals the data was written with)
+  Finest,    ///< the largest k the box allows (PreparedRegion: room for subjects' decimals)
+};
+/// A decimal grid, scale 10^k (0 <= k <= 22), that holds every coordinate of `a` and `b`
+/// exactly: each is the double nearest to a multiple of 10^-k, |v| * 10^k <= 2^50, and `range`
+/// (a box around them) fits in +-2^30 units of the origin, a grid point near its centre.
+/// nullopt when there is none.
+std::optional<Grid> fitDecimalGrid(const Box& range, const Paths& a, const Paths& b,
+                                   DecimalPick pick);
 
 /// One operand, snapped and validated once: its rings, its fill rule, and the orientation of
 /// its ring when it is a single strictly convex one (convexOrientation(), else 0).

@@ -1,5 +1,8 @@
 // SPDX-License-Identifier: MIT
-// PreparedRegion: the clip operand snapped once, and a workspace of its own.
+// PreparedRegion: the clip operand snapped once, and a workspace of its own. With a fitted grid
+// the region's grid is fitted to its grown box (regionGrid()); subjects that grid does not take
+// as the free function would (beyond its range, or off a grid that holds the region exactly) go
+// to the free function.
 #include <algorithm>
 #include <cmath>
 
@@ -11,22 +14,38 @@
 namespace roiclip {
 namespace {
 
-// The bounding box of every finite vertex, as one closed path of its corners (empty when there
-// is none), grown by `grow` times its larger side on every side.
-Paths boxOf(const Paths& paths, double grow) {
+// The bounding box of every finite vertex, grown by `grow` times its larger side on every side.
+detail::Box boxOf(const Paths& paths, double grow) {
   detail::Box box;
   box.add(paths);
-  if (box.empty()) return {};
+  if (box.empty()) return box;
   const double margin = grow * std::max({box.maxX - box.minX, box.maxY - box.minY, 1.0});
-  return {{{box.minX - margin, box.minY - margin},
-           {box.maxX + margin, box.minY - margin},
-           {box.maxX + margin, box.maxY + margin},
-           {box.minX - margin, box.maxY + margin}}};
+  box.minX -= margin;
+  box.maxX += margin;
+  box.minY -= margin;
+  box.maxY += margin;
+  return box;
 }
 
 // With a fitted grid the region gets a grid fitted to its box grown by this many times its side
 // on every side, so that subjects around it (the rest of an image) snap to the same grid.
 constexpr double kFittedMargin = 2.0;
+
+// The fitted grid of a region: the power-of-two grid of its grown box when that holds the
+// region exactly, else the finest decimal grid of the grown box that does (so subjects written
+// with as many decimals or fewer stay on it), else the power-of-two grid again (`exact` false).
+Grid regionGrid(const Paths& paths, bool& exact) {
+  const detail::Box box = boxOf(paths, kFittedMargin);
+  exact = true;
+  if (box.empty()) return Grid::fixed(1.0);
+  const Grid binary = detail::fitBinaryGrid(box);
+  if (detail::holdsExactly(binary, paths)) return binary;
+  if (const auto decimal = detail::fitDecimalGrid(box, paths, {}, detail::DecimalPick::Finest)) {
+    return *decimal;
+  }
+  exact = false;
+  return binary;
+}
 
 }  // namespace
 
@@ -34,26 +53,31 @@ struct PreparedRegion::Impl {
   Impl(const Paths& paths, FillRule r, const Options& o)
       : rule(r),
         options(o),
-        grid(o.grid.isFitted() ? resolveGrid(o.grid, boxOf(paths, kFittedMargin))
-                               : resolveGrid(o.grid, paths)),
+        grid(o.grid.isFitted() ? regionGrid(paths, regionExact) : resolveGrid(o.grid, paths)),
         region(detail::snapOperand(paths, 1, r, grid)) {
     if (options.grid.isFitted()) source = paths;
   }
-  // True when every finite vertex of `paths` lies in the prepared grid's range.
-  [[nodiscard]] bool inRange(const Paths& paths) const {
+  // True when the prepared grid gives what the free function gives for `paths`: always on a
+  // fixed grid; on a fitted one when every finite vertex lies in the grid's range and, if the
+  // grid holds the region exactly, the subject too (the free function's grid then holds both
+  // exactly, and exact inputs give the same correctly rounded output on any grid).
+  [[nodiscard]] bool takes(const Paths& paths) const {
     if (!options.grid.isFitted()) return true;  // a fixed grid: snapping reports what is not
-    for (const Path& corner : boxOf(paths, 0.0)) {
-      for (const Point& p : corner) {
-        if (!grid.toUnits(p.x, grid.origin.x) || !grid.toUnits(p.y, grid.origin.y)) return false;
-      }
+    const detail::Box box = boxOf(paths, 0.0);
+    for (const double x : {box.minX, box.maxX}) {
+      if (!box.empty() && !grid.toUnits(x, grid.origin.x)) return false;
     }
-    return true;
+    for (const double y : {box.minY, box.maxY}) {
+      if (!box.empty() && !grid.toUnits(y, grid.origin.y)) return false;
+    }
+    return !regionExact || detail::holdsExactly(grid, paths);
   }
   FillRule rule;
   Options options;
+  bool regionExact = true;  // the fitted grid holds every region vertex exactly
   Grid grid;
   detail::SnappedOperand region;
-  Paths source;  // the region as given, for subjects beyond the fitted grid's range
+  Paths source;  // the region as given, for subjects the prepared grid does not take
   mutable detail::Workspace workspace;
 };
 
@@ -68,7 +92,7 @@ PreparedRegion::PreparedRegion(PreparedRegion&& other) noexcept = default;
 PreparedRegion& PreparedRegion::operator=(PreparedRegion&& other) noexcept = default;
 
 PolygonSet PreparedRegion::clip(ClipOp op, const Paths& subject, FillRule subjectRule) const {
-  if (!impl_->inRange(subject)) {
+  if (!impl_->takes(subject)) {
     return roiclip::clip(op, subject, impl_->source, subjectRule, impl_->rule, impl_->options);
   }
   detail::SnappedOperand s = detail::snapOperand(subject, 0, subjectRule, impl_->grid);
@@ -85,7 +109,7 @@ PolygonSet PreparedRegion::intersect(const Paths& subject, FillRule subjectRule)
 }
 
 Paths PreparedRegion::clipLines(const Paths& lines, LinePart part) const {
-  if (!impl_->inRange(lines)) {
+  if (!impl_->takes(lines)) {
     return roiclip::clipLines(lines, impl_->source, impl_->rule, part, impl_->options);
   }
   std::vector<detail::InputEdge> edges;

@@ -21,13 +21,20 @@ namespace {
 constexpr ClipOp kOps[] = {ClipOp::Intersection, ClipOp::Union, ClipOp::Difference, ClipOp::Xor};
 
 // A random polygon (it may cross itself) of n vertices within `size` of `centre`, every
-// coordinate rounded to a multiple of `detail` (decimal, as GIS data is written).
-Path mapPolygon(std::mt19937& rng, int n, Point centre, double size, double detail) {
+// coordinate a multiple of `detail`. With `decimals` = k >= 0 (detail 10^-k) each is the double
+// nearest its decimal (what parsing the text GIS data is written in gives), else a binary
+// fraction.
+Path mapPolygon(std::mt19937& rng, int n, Point centre, double size, double detail, int decimals) {
   std::uniform_real_distribution<double> u(-0.5, 0.5);
+  const double ten = std::pow(10.0, decimals);
+  const auto coordinate = [&](double c) {
+    if (decimals < 0) return c + std::round(u(rng) * size / detail) * detail;
+    return double(std::llround(c * ten) + std::llround(u(rng) * size * ten)) / ten;
+  };
   Path path;
   for (int i = 0; i < n; ++i) {
-    path.push_back({centre.x + std::round(u(rng) * size / detail) * detail,
-                    centre.y + std::round(u(rng) * size / detail) * detail});
+    const double x = coordinate(centre.x);
+    path.push_back({x, coordinate(centre.y)});
   }
   return path;
 }
@@ -45,8 +52,9 @@ double exactArea(const Paths& subject, const Paths* clip, ClipOp op, FillRule ru
 struct Place {
   const char* name;
   Point centre;
-  double size;    // extent of the polygons
-  double detail;  // coordinate step of the data
+  double size;        // extent of the polygons
+  double detail;      // coordinate step of the data
+  int decimals = -1;  // k for decimal data (detail 10^-k), -1 for binary
 };
 
 // The certified bound of the snapping error: every vertex moves by at most half a grid step per
@@ -80,10 +88,12 @@ double roundingBound(const PolygonSet& set, double magnitude) {
   return 1.01 * bound;
 }
 
-// 40 random cases per place: simplify and the four operations, every fill rule in turn. Data on
-// a binary lattice no finer than the grid (`onGrid`) does not move when snapped: its areas must
-// match within 1e-9 relative. Decimal data moves by up to half a grid step (about 2^-32 of the
-// extent): its areas must stay within the certified bound of that move. Polygons far smaller
+// 40 random cases per place: simplify and the four operations, every fill rule in turn. Data the
+// fitted grid holds (`onGrid`: a binary lattice no finer than the power-of-two grid, or doubles
+// nearest to decimals, which get a decimal grid) does not move when snapped, or by half an ulp:
+// its areas must match within 1e-9 relative. Other data (decimals computed in doubles, off both
+// grids) moves by up to half a grid step (about 2^-32 of the extent): its areas must stay within
+// the certified bound of that move. Polygons far smaller
 // than the ulp of their position (`roundingShows`) lose digits in their output doubles
 // themselves: that rounding's bound is added.
 void checkPlace(const Place& place, unsigned seed, bool onGrid, bool roundingShows = false) {
@@ -94,10 +104,15 @@ void checkPlace(const Place& place, unsigned seed, bool onGrid, bool roundingSho
   const FillRule rules[] = {FillRule::EvenOdd, FillRule::NonZero, FillRule::Positive};
   for (int i = 0; i < 40; ++i) {
     const FillRule rule = rules[i % 3];
-    const Paths s = {mapPolygon(rng, 5 + int(rng() % 5), place.centre, place.size, place.detail)};
-    const Paths c = {mapPolygon(rng, 4 + int(rng() % 4), place.centre, place.size, place.detail)};
+    const Paths s = {mapPolygon(rng, 5 + int(rng() % 5), place.centre, place.size, place.detail,
+                                place.decimals)};
+    const Paths c = {mapPolygon(rng, 4 + int(rng() % 4), place.centre, place.size, place.detail,
+                                place.decimals)};
     const std::string what = std::string(place.name) + " case " + std::to_string(i) + " " +
                              toString(rule) + testing::describe(s) + testing::describe(c);
+    if (place.decimals >= 0) {  // the decimals the data was written with
+      EXPECT_EQ(resolveGrid({}, s, c).scale, std::pow(10.0, place.decimals)) << what;
+    }
     // Relative to the area the operands cover together: a difference can be empty.
     const double scale = exactArea(s, &c, ClipOp::Union, rule) + 1e-300;
     const double simplifyTolerance = onGrid ? 1e-9 * scale : snapBound(s, {}, resolveGrid({}, s));
@@ -129,16 +144,20 @@ void checkPlace(const Place& place, unsigned seed, bool onGrid, bool roundingSho
 
 TEST(MapCoordinates, UtmOffsetsWithSubMillimetreDetail) {
   // A 100 m block at easting 512 km, northing 5,087 km: coordinates to 2^-12 m (0.24 mm), which
-  // the fitted grid (2^-24 m) holds exactly, and decimal ones to 0.1 mm, which it rounds.
+  // the fitted grid (2^-24 m) holds exactly, and decimal ones to 0.1 mm, which the decimal grid
+  // (10^4 per metre) holds. The same decimals computed as centre + n * 1e-4 in doubles are not
+  // the doubles nearest to them: the power-of-two grid rounds them.
   checkPlace({"utm", {512345.5, 5087776.25}, 100.0, 0x1p-12}, 11, true);
-  checkPlace({"utm decimal", {512345.6789, 5087776.1234}, 100.0, 1e-4}, 16, false);
+  checkPlace({"utm decimal", {512345.6789, 5087776.1234}, 100.0, 1e-4, 4}, 16, true);
+  checkPlace({"utm computed", {512345.6789, 5087776.1234}, 100.0, 1e-4}, 16, false);
 }
 
 TEST(MapCoordinates, LongitudeLatitudeAtCityScale) {
   // About 5 km around Berlin's centre: coordinates to 2^-27 degree (0.8 mm), and decimal ones to
   // 1e-7 degree (1 cm).
   checkPlace({"lonlat", {13.40625, 52.515625}, 0.05, 0x1p-27}, 12, true);
-  checkPlace({"lonlat decimal", {13.404954, 52.520008}, 0.05, 1e-7}, 17, false);
+  checkPlace({"lonlat decimal", {13.404954, 52.520008}, 0.05, 1e-7, 7}, 17, true);
+  checkPlace({"lonlat computed", {13.404954, 52.520008}, 0.05, 1e-7}, 17, false);
 }
 
 TEST(MapCoordinates, TinyPolygonsFarFromTheOrigin) {
