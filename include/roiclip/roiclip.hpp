@@ -133,9 +133,10 @@ const char* toString(LinePart part);
 /// subjects, e.g. one ROI and every contour of a video frame. Each call gives what the free
 /// function with the same arguments gives (`region` as the clip operand), without reading the
 /// region again (exactly the same with a fixed grid; with the default fitted grid the region's
-/// grid is fitted to its bounding box grown by twice its side on every side, so results are the
-/// same wherever the coordinates lie on both grids, e.g. for pixel coordinates, and a subject
-/// reaching beyond that box is clipped by the free function), and works in memory the object owns
+/// grid, power-of-two or decimal as the free function would choose, is fitted to its bounding box
+/// grown by twice its side on every side, and a subject reaching beyond that box, or one with a
+/// coordinate off a grid that holds the region exactly, is clipped by the free function, so
+/// results are the free function's), and works in memory the object owns
 /// and keeps between calls (its largest call's working arrays, up to 64 MiB per array), so a loop
 /// over small subjects does not allocate working memory. Calls on one object from several threads
 /// at once are safe (a call that finds the object's memory in use works in memory of its own). An
