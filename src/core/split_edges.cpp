@@ -433,14 +433,24 @@ class Sweep {
     starting_.resize(kept);
   }
 
+  // Whether piece b was one of the last pieces tested above `a`; records it if not.
+  static bool testedBefore(SweepPiece& a, int b) {
+    for (int seen : a.checkedAbove) {
+      if (seen == b) return true;
+    }
+    a.checkedAbove[a.checkedNext] = b;
+    a.checkedNext = std::uint8_t((a.checkedNext + 1) % a.checkedAbove.size());
+    return false;
+  }
+
   void checkCrossing(int a, int b, const XPoint& p) {
     if (a < 0 || b < 0) return;
     SweepPiece& pa = pieces_[a];
     const SweepPiece& pb = pieces_[b];
     // A piece keeps its supporting segment and right end when it is cut, so a pair's crossing
-    // never changes: testing the same pair again can only find the same event.
-    if (pa.checkedAbove == b) return;
-    pa.checkedAbove = b;
+    // never changes: testing the same pair again can only find the same event (pushed again, a
+    // duplicate: harmless, but it costs the test, a push and a pop).
+    if (testedBefore(pa, b)) return;
     // Two pieces leaving the same point (right after their crossing) cannot cross again.
     if (equal(pa.left, pb.left)) return;
     // Cheap exact rejection on the integer supporting segments before the rational crossing.
