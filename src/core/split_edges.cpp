@@ -459,12 +459,8 @@ class Sweep {
         std::min(std::max(pa.lineA.y, pa.lineB.y), std::max(pb.lineA.y, pb.lineB.y))) {
       return;
     }
-    const int o1 = orient(pa.lineA, pa.lineB, pb.lineA), o2 = orient(pa.lineA, pa.lineB, pb.lineB);
-    if (o1 * o2 > 0 || (o1 == 0 && o2 == 0)) return;
-    const int o3 = orient(pb.lineA, pb.lineB, pa.lineA), o4 = orient(pb.lineA, pb.lineB, pa.lineB);
-    if (o3 * o4 > 0) return;
     XPoint x;
-    if (!lineIntersection(pa.lineA, pa.lineB, pb.lineA, pb.lineB, x)) return;
+    if (!segmentCrossing(pa.lineA, pa.lineB, pb.lineA, pb.lineB, x)) return;
     if (compare(x, p) <= 0) return;
     const int ca = compare(x, pa.right);
     const int cb = compare(x, pb.right);
