@@ -447,18 +447,20 @@ class Sweep {
     if (a < 0 || b < 0) return;
     SweepPiece& pa = pieces_[a];
     const SweepPiece& pb = pieces_[b];
-    // A piece keeps its supporting segment and right end when it is cut, so a pair's crossing
-    // never changes: testing the same pair again can only find the same event (pushed again, a
-    // duplicate: harmless, but it costs the test, a push and a pop).
-    if (testedBefore(pa, b)) return;
-    // Two pieces leaving the same point (right after their crossing) cannot cross again.
-    if (equal(pa.left, pb.left)) return;
     // Cheap exact rejection on the integer supporting segments before the rational crossing.
     if (std::max(pa.lineA.x, pb.lineA.x) > std::min(pa.lineB.x, pb.lineB.x)) return;
     if (std::max(std::min(pa.lineA.y, pa.lineB.y), std::min(pb.lineA.y, pb.lineB.y)) >
         std::min(std::max(pa.lineA.y, pa.lineB.y), std::max(pb.lineA.y, pb.lineB.y))) {
       return;
     }
+    // A piece keeps its supporting segment and right end when it is cut, so a pair's crossing
+    // never changes: testing the same pair again can only find the same event (pushed again, a
+    // duplicate: harmless, but it costs the test, a push and a pop). Asked only of pairs whose
+    // boxes overlap: the box test is cheaper than the history, and on a contour most neighbours
+    // fail it.
+    if (testedBefore(pa, b)) return;
+    // Two pieces leaving the same point (right after their crossing) cannot cross again.
+    if (equal(pa.left, pb.left)) return;
     XPoint x;
     if (!segmentCrossing(pa.lineA, pa.lineB, pb.lineA, pb.lineB, x)) return;
     if (compare(x, p) <= 0) return;
