@@ -155,6 +155,30 @@ inline bool less(const XPoint& a, const XPoint& b) { return compare(a, b) < 0; }
 /// from d1.
 inline int crossSign(IPoint d1, IPoint d2) { return signOf(i128(d1.x) * d2.y - i128(d1.y) * d2.x); }
 
+/// The point a + (num / den) * (b - a) on the line through grid points a, b; den > 0. Crossings
+/// on the grid come back with W == 1.
+inline void pointAlong(IPoint a, IPoint b, i128 num, i128 den, XPoint& out) {
+  const i128 x = i128(a.x) * den + i128(b.x - a.x) * num;
+  const i128 y = i128(a.y) * den + i128(b.y - a.y) * num;
+  // Not reduced by gcds (that cost more than the rest of the crossing): comparisons are exact
+  // for any representation. Crossings on the grid are stored with W == 1 for the fast paths;
+  // the double quotient is within 2^-50 relative of the exact one, so a grid point is always
+  // caught, and the exact product check rejects near misses.
+  const double fx = double(x) / double(den), fy = double(y) / double(den);
+  const double rx = double(std::int64_t(fx + (fx >= 0 ? 0.5 : -0.5)));
+  const double ry = double(std::int64_t(fy + (fy >= 0 ? 0.5 : -0.5)));
+  if (std::fabs(fx - rx) < 1e-3 && std::fabs(fy - ry) < 1e-3 && i128(rx) * den == x &&
+      i128(ry) * den == y) {
+    out = XPoint(IPoint{std::int64_t(rx), std::int64_t(ry)});
+    return;
+  }
+  out.x = x;  // XPoint(x, y, den) without converting x, y and den to double again
+  out.y = y;
+  out.w = den;
+  out.fx = fx;
+  out.fy = fy;
+}
+
 /// Crossing point of the lines through grid segments (a, b) and (c, d). Returns false when the
 /// lines are parallel. Crossings on the grid come back with W == 1.
 inline bool lineIntersection(IPoint a, IPoint b, IPoint c, IPoint d, XPoint& out) {
@@ -166,25 +190,32 @@ inline bool lineIntersection(IPoint a, IPoint b, IPoint c, IPoint d, XPoint& out
     den = -den;
     num = -num;
   }
-  const i128 x = i128(a.x) * den + d1x * num;
-  const i128 y = i128(a.y) * den + d1y * num;
-  // Not reduced by gcds (that cost more than the rest of the crossing): comparisons are exact
-  // for any representation. Crossings on the grid are stored with W == 1 for the fast paths;
-  // the double quotient is within 2^-50 relative of the exact one, so a grid point is always
-  // caught, and the exact product check rejects near misses.
-  const double fx = double(x) / double(den), fy = double(y) / double(den);
-  const double rx = double(std::int64_t(fx + (fx >= 0 ? 0.5 : -0.5)));
-  const double ry = double(std::int64_t(fy + (fy >= 0 ? 0.5 : -0.5)));
-  if (std::fabs(fx - rx) < 1e-3 && std::fabs(fy - ry) < 1e-3 && i128(rx) * den == x &&
-      i128(ry) * den == y) {
-    out = XPoint(IPoint{std::int64_t(rx), std::int64_t(ry)});
-    return true;
+  pointAlong(a, b, num, den, out);
+  return true;
+}
+
+/// Whether the closed grid segments (a, b) and (c, d) meet in exactly one point (not parallel,
+/// so not collinear), and that point (lineIntersection()). The same answer as the four
+/// orientation tests orient(a, b, c), orient(a, b, d), orient(c, d, a), orient(c, d, b) followed
+/// by lineIntersection(), from three cross products instead of six (the sweep's crossing test):
+/// with d1 = b - a, d2 = d - c, den = d1 x d2, e = d1 x (c - a) and num = (c - a) x d2, those
+/// orientations are the signs of e, e + den, num and num - den.
+inline bool segmentCrossing(IPoint a, IPoint b, IPoint c, IPoint d, XPoint& out) {
+  const i128 d1x = b.x - a.x, d1y = b.y - a.y, d2x = d.x - c.x, d2y = d.y - c.y;
+  const i128 cax = c.x - a.x, cay = c.y - a.y;
+  i128 den = d1x * d2y - d1y * d2x;
+  if (den == 0) return false;  // parallel or collinear
+  const i128 e = d1x * cay - d1y * cax;
+  const int o1 = signOf(e), o2 = signOf(e + den);
+  if (o1 * o2 > 0) return false;  // c and d strictly on one side of line ab
+  i128 num = cax * d2y - cay * d2x;
+  const int o3 = signOf(num), o4 = signOf(num - den);
+  if (o3 * o4 > 0) return false;  // a and b strictly on one side of line cd
+  if (den < 0) {
+    den = -den;
+    num = -num;
   }
-  out.x = x;  // XPoint(x, y, den) without converting x, y and den to double again
-  out.y = y;
-  out.w = den;
-  out.fx = fx;
-  out.fy = fy;
+  pointAlong(a, b, num, den, out);
   return true;
 }
 

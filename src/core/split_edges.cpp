@@ -433,28 +433,36 @@ class Sweep {
     starting_.resize(kept);
   }
 
+  // Whether piece b was one of the last pieces tested above `a`; records it if not.
+  static bool testedBefore(SweepPiece& a, int b) {
+    for (int seen : a.checkedAbove) {
+      if (seen == b) return true;
+    }
+    a.checkedAbove[a.checkedNext] = b;
+    a.checkedNext = std::uint8_t((a.checkedNext + 1) % a.checkedAbove.size());
+    return false;
+  }
+
   void checkCrossing(int a, int b, const XPoint& p) {
     if (a < 0 || b < 0) return;
     SweepPiece& pa = pieces_[a];
     const SweepPiece& pb = pieces_[b];
-    // A piece keeps its supporting segment and right end when it is cut, so a pair's crossing
-    // never changes: testing the same pair again can only find the same event.
-    if (pa.checkedAbove == b) return;
-    pa.checkedAbove = b;
-    // Two pieces leaving the same point (right after their crossing) cannot cross again.
-    if (equal(pa.left, pb.left)) return;
     // Cheap exact rejection on the integer supporting segments before the rational crossing.
     if (std::max(pa.lineA.x, pb.lineA.x) > std::min(pa.lineB.x, pb.lineB.x)) return;
     if (std::max(std::min(pa.lineA.y, pa.lineB.y), std::min(pb.lineA.y, pb.lineB.y)) >
         std::min(std::max(pa.lineA.y, pa.lineB.y), std::max(pb.lineA.y, pb.lineB.y))) {
       return;
     }
-    const int o1 = orient(pa.lineA, pa.lineB, pb.lineA), o2 = orient(pa.lineA, pa.lineB, pb.lineB);
-    if (o1 * o2 > 0 || (o1 == 0 && o2 == 0)) return;
-    const int o3 = orient(pb.lineA, pb.lineB, pa.lineA), o4 = orient(pb.lineA, pb.lineB, pa.lineB);
-    if (o3 * o4 > 0) return;
+    // A piece keeps its supporting segment and right end when it is cut, so a pair's crossing
+    // never changes: testing the same pair again can only find the same event (pushed again, a
+    // duplicate: harmless, but it costs the test, a push and a pop). Asked only of pairs whose
+    // boxes overlap: the box test is cheaper than the history, and on a contour most neighbours
+    // fail it.
+    if (testedBefore(pa, b)) return;
+    // Two pieces leaving the same point (right after their crossing) cannot cross again.
+    if (equal(pa.left, pb.left)) return;
     XPoint x;
-    if (!lineIntersection(pa.lineA, pa.lineB, pb.lineA, pb.lineB, x)) return;
+    if (!segmentCrossing(pa.lineA, pa.lineB, pb.lineA, pb.lineB, x)) return;
     if (compare(x, p) <= 0) return;
     const int ca = compare(x, pa.right);
     const int cb = compare(x, pb.right);

@@ -5,7 +5,9 @@
 // thread's workspace (WorkspaceLease); a PreparedRegion owns its own.
 #pragma once
 
+#include <array>
 #include <atomic>
+#include <cstdint>
 #include <deque>
 #include <memory>
 #include <vector>
@@ -48,11 +50,15 @@ struct SweepPiece {
   IPoint lineA, lineB;
   Windings contribution{};
   Windings windBelow{};
-  int node = -1;          ///< its status node while in the status, else -1
-  int slot = -1;          ///< index of its output piece (result pieces only) while in the status
-  int resultBelow = -1;   ///< nearest result piece below it when it was inserted
-  int checkedAbove = -1;  ///< the last piece above it tested for a crossing
-  bool open = false;      ///< a piece of an open polyline (zero contribution, never merged)
+  int node = -1;         ///< its status node while in the status, else -1
+  int slot = -1;         ///< index of its output piece (result pieces only) while in the status
+  int resultBelow = -1;  ///< nearest result piece below it when it was inserted
+  /// The last pieces above it tested for a crossing (a ring; checkedNext is the oldest). A pair
+  /// separated by a third piece for a moment becomes adjacent again: with only the last one
+  /// remembered, W3 tested 22% of its pairs twice and queued 135k of its 465k crossings twice.
+  std::array<int, 8> checkedAbove{-1, -1, -1, -1, -1, -1, -1, -1};
+  std::uint8_t checkedNext = 0;
+  bool open = false;  ///< a piece of an open polyline (zero contribution, never merged)
   LinePlace place = LinePlace::Outside;  ///< open pieces: where it lies
   [[nodiscard]] int nearestResult() const { return slot >= 0 ? slot : resultBelow; }
   [[nodiscard]] IPoint direction() const { return {lineB.x - lineA.x, lineB.y - lineA.y}; }

@@ -138,6 +138,40 @@ TEST(PredicateFilters, OrientOfCrossingsNearTheirLines) {
   EXPECT_LT(zero, 2000);
 }
 
+// segmentCrossing() (the sweep's crossing test, three cross products) gives the answer of the
+// four orientation tests and lineIntersection() it replaced, on segments of a small grid (shared
+// ends, collinear and parallel pairs, touching ends, T junctions) and at the grid's range (the
+// cross products near 2^63).
+TEST(PredicateFilters, SegmentCrossingMatchesFourOrientationsAndLineIntersection) {
+  std::mt19937_64 rng(13);
+  int crossing = 0, rejected = 0, touching = 0;
+  for (int i = 0; i < 40000; ++i) {
+    const std::int64_t range = i % 2 == 0 ? 4 : kMax;
+    std::uniform_int_distribution<std::int64_t> any(-range, range);
+    const IPoint a{any(rng), any(rng)}, b{any(rng), any(rng)}, c{any(rng), any(rng)},
+        d{any(rng), any(rng)};
+    const int o1 = orient(a, b, c), o2 = orient(a, b, d), o3 = orient(c, d, a),
+              o4 = orient(c, d, b);
+    XPoint expected;
+    const bool meets = !(o1 * o2 > 0 || (o1 == 0 && o2 == 0)) && o3 * o4 <= 0 &&
+                       lineIntersection(a, b, c, d, expected);
+    XPoint got;
+    ASSERT_EQ(segmentCrossing(a, b, c, d, got), meets) << i;
+    if (!meets) {
+      ++rejected;
+      continue;
+    }
+    ++crossing;
+    touching += o1 * o2 * o3 * o4 == 0;
+    EXPECT_TRUE(got.x == expected.x && got.y == expected.y && got.w == expected.w) << i;
+    EXPECT_EQ(got.fx, expected.fx);
+    EXPECT_EQ(got.fy, expected.fy);
+  }
+  EXPECT_GT(crossing, 1000);
+  EXPECT_GT(rejected, 1000);
+  EXPECT_GT(touching, 100);
+}
+
 // The sweep on crossings far from the origin: the same random polygons simplified near the
 // origin and translated by about 4 million pixels (close to the grid's range at the default
 // scale) give the same arrangement: the event order near ties is exact, not a filter's guess.

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <map>
+#include <random>
 #include <string>
 #include <utility>
 #include <vector>
@@ -97,6 +98,47 @@ TEST(StageSplitEdges, CollinearOverlapIsMergedAndInnerEdgesAreNotKept) {
       stages::arrange({{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {{0, 0}, {10, 0}, {10, 10}, {0, 10}}},
                       nullptr, stages::simplifyWith(FillRule::EvenOdd));
   EXPECT_TRUE(overlap.pieces.empty()) << "the same square twice has w = 2: nothing is filled";
+}
+
+// The sweep tests a pair of neighbours for a crossing only once (it remembers the last pieces it
+// tested above each piece): a pair that a third piece separates for a moment and that meets
+// again is not tested again. On two self-intersecting operands on a coarse grid (shared vertices,
+// collinear overlaps within and between the operands, crossings between and within both) every
+// crossing must still be found: every kept piece's winding numbers of both operands match the
+// exact ones on its sides, and the intersection's area matches the slab oracle.
+TEST(StageSplitEdges, BothOperandsSelfIntersectingOnACoarseGrid) {
+  for (unsigned seed : {7u, 8u, 9u}) {
+    std::mt19937 rng(seed);
+    std::uniform_int_distribution<int> coord(0, 11);
+    Paths subject(1), clipPaths(1);
+    for (int i = 0; i < 40; ++i) subject[0].push_back(Point(coord(rng), coord(rng)));
+    for (int i = 0; i < 40; ++i) {
+      // Every fourth clip vertex is a subject vertex: shared vertices between the operands.
+      clipPaths[0].push_back(i % 4 == 0 ? subject[0][std::size_t(i)]
+                                        : Point(coord(rng), coord(rng)));
+    }
+    for (FillRule rule : {FillRule::EvenOdd, FillRule::NonZero}) {
+      SCOPED_TRACE("seed " + std::to_string(seed) + " " + toString(rule));
+      detail::BooleanSpec how = stages::clipWith(ClipOp::Intersection);
+      how.subjectRule = how.clipRule = rule;
+      const detail::Arrangement a = stages::arrange(subject, &clipPaths, how);
+      ASSERT_GT(a.pieces.size(), 20u);
+      for (std::size_t k = 0; k < a.pieces.size(); ++k) {
+        const auto [below, above] = stages::sidePoints(a, a.pieces[k], 1e-6);
+        EXPECT_EQ(testing::exactWinding(subject, below), a.pieces[k].windBelow[0]) << k;
+        EXPECT_EQ(testing::exactWinding(subject, above), a.pieces[k].windAbove()[0]) << k;
+        EXPECT_EQ(testing::exactWinding(clipPaths, below), a.pieces[k].windBelow[1]) << k;
+        EXPECT_EQ(testing::exactWinding(clipPaths, above), a.pieces[k].windAbove()[1]) << k;
+      }
+      const PolygonSet r = clip(ClipOp::Intersection, subject, clipPaths, rule, rule);
+      const double truth =
+          testing::slabArea({&subject, &clipPaths}, [&](const std::vector<long long>& w) {
+            return isFilled(rule, w[0]) && isFilled(rule, w[1]);
+          });
+      EXPECT_GT(truth, 1.0);
+      EXPECT_NEAR(r.area(), truth, 1e-9 * truth);
+    }
+  }
 }
 
 // Long steep edges at the edge of the coordinate range cross a vertical edge: the crossings
