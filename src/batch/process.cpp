@@ -298,6 +298,12 @@ class Pipeline {
       } else {
         c.inputArea = opencv::pixelContourArea(group);
       }
+      // No area (a lone pixel, a 1 px wide straight line, a contour --approx flattens): it
+      // contributes nothing to any clip, so it is counted, not kept as an object.
+      if (c.inputArea == 0) {
+        ++r.contoursDegenerate;
+        continue;
+      }
       ++calls.clip;
       c.clipped = roi.intersect(c.input, rule);
       c.clippedArea = c.clipped.area();

@@ -41,7 +41,8 @@ std::string fmt(double v, int precision) {
 
 const char* const kSummaryColumns =
     "image,status,failure,reason,skipped,width,height,tags_found,roi_area,contours_in,"
-    "contours_out,clipped_area,iou,off_band_mismatches,seconds,roi,tags_rejected";
+    "contours_out,clipped_area,iou,off_band_mismatches,seconds,roi,tags_rejected,"
+    "contours_degenerate";
 
 std::string summaryCsv(const RunSummary& summary) {
   std::ostringstream os;
@@ -60,7 +61,7 @@ std::string summaryCsv(const RunSummary& summary) {
          << roi.contoursOut << ',' << fmt(roi.clippedArea, 3) << ','
          << (r.iou ? fmt(*r.iou, 6) : std::string()) << ','  // empty: the check did not run
          << r.offBandMismatches << ',' << fmt(r.seconds, 4) << ',' << csvField(roi.name) << ','
-         << r.tagsRejected << "\n";
+         << r.tagsRejected << ',' << r.contoursDegenerate << "\n";
     }
   }
   return os.str();
@@ -99,6 +100,7 @@ std::string summaryJson(const RunSummary& summary, const BatchOptions& options) 
                     {"rois", std::move(rois)},
                     {"roi_area", r.roiArea},
                     {"contours_in", r.contoursIn},
+                    {"contours_degenerate", r.contoursDegenerate},
                     {"contours_out", r.contoursOut},
                     {"clipped_area", r.clippedArea},
                     {"iou", r.iou ? Json(*r.iou) : Json(nullptr)},

@@ -210,6 +210,7 @@ std::optional<ImageRecord> recordFromJson(const Json& j) {
     }
     r.roiArea = j.at("roi").at("area").get<double>();
     r.contoursIn = j.at("contours_in").get<int>();
+    r.contoursDegenerate = j.value("contours_degenerate", 0);  // absent before 0.3
     r.contoursOut = j.at("contours_out").get<int>();
     r.clippedArea = j.at("clipped_area").get<double>();
     const Json& check = j.at("mask_check");
@@ -254,6 +255,7 @@ ImageRecord recordOf(const ImageResult& r) {
   }
   rec.roiArea = r.roiArea;
   rec.contoursIn = r.contoursIn;
+  rec.contoursDegenerate = r.contoursDegenerate;
   rec.contoursOut = r.contoursOut;
   rec.clippedArea = r.clippedArea;
   if (checked(r.status)) {
@@ -335,6 +337,7 @@ std::string resultToJson(const ImageResult& r, const std::string& imageName,
   j["excluded_tags"] = detail::pathsJson(r.excludedTags);
   j["roi"] = {{"paths", detail::pathsJson(r.roi)}, {"area", r.roiArea}};
   j["contours_in"] = r.contoursIn;
+  j["contours_degenerate"] = r.contoursDegenerate;
   j["contours_out"] = r.contoursOut;
   j["holes_in"] = r.holesIn;
   j["clipped_area"] = r.clippedArea;

@@ -342,6 +342,30 @@ TEST(BatchOptions, MinAreaDropsSmallContours) {
   for (const auto& c : b.contours) EXPECT_GE(c.inputArea, 200.0 - 1e-9);
 }
 
+// A lone pixel or a 1 px wide line is a contour without an area: counted, not kept as an object.
+// --min-area 0.25 drops exactly those (findContours areas are multiples of 0.5), so both runs keep
+// the same objects and clip the same area.
+TEST(BatchOptions, ContoursWithoutAreaAreCountedNotKept) {
+  const cv::Mat image = cv::imread(kImages + "/scene_01.png", cv::IMREAD_GRAYSCALE);
+  rb::RunOptions all;
+  all.contours.method = roiclip::opencv::ContourMethod::Adaptive;
+  rb::RunOptions positive = all;
+  positive.contours.minArea = 0.25;
+  const rb::ImageResult a = rb::processImage(image, all);
+  const rb::ImageResult b = rb::processImage(image, positive);
+  ASSERT_EQ(a.status, rb::Status::Ok) << a.reason;
+  ASSERT_EQ(b.status, rb::Status::Ok) << b.reason;
+  EXPECT_GT(a.contoursDegenerate, 50);
+  EXPECT_EQ(b.contoursDegenerate, 0);
+  EXPECT_EQ(a.contoursIn, b.contoursIn);
+  EXPECT_EQ(a.contours.size(), std::size_t(a.contoursIn));
+  for (const auto& c : a.contours) EXPECT_GT(c.inputArea, 0.0) << c.contourIndex;
+  EXPECT_EQ(a.clippedArea, b.clippedArea);
+  EXPECT_EQ(a.contoursOut, b.contoursOut);
+  const Json j = Json::parse(rb::resultToJson(a));
+  EXPECT_EQ(j["contours_degenerate"], a.contoursDegenerate);
+}
+
 TEST(BatchJson, ResultJsonHasEveryFigure) {
   const cv::Mat image = cv::imread(kImages + "/scene_07.png", cv::IMREAD_GRAYSCALE);
   const rb::ImageResult r = rb::processImage(image, kDefaults);
@@ -475,7 +499,8 @@ TEST(BatchCoreCalls, OnePerContourPlusThreeAndTheMaskCheckDoesNotClip) {
     rb::detail::CoreCalls approx;
     const rb::ImageResult a = rb::detail::processCountingCoreCalls(image, approximate, approx);
     ASSERT_EQ(a.status, rb::Status::Ok) << scene << ": " << a.reason;
-    EXPECT_EQ(approx.total(), 2 * a.contoursIn + 3) << scene;
+    // Every outer contour's area is a simplify; only those with an area are clipped.
+    EXPECT_EQ(approx.total(), 2 * a.contoursIn + a.contoursDegenerate + 3) << scene;
     // The same result as the uncounted pipeline.
     const rb::ImageResult plain = rb::processImage(image, kDefaults);
     EXPECT_EQ(plain.clippedArea, r.clippedArea) << scene;

@@ -89,12 +89,16 @@ struct ImageResult {
   Paths roi;
   double roiArea = 0;                   ///< area of roi, px^2
   std::vector<ContourResult> contours;  ///< every contour kept (after minArea), clipped
-  int contoursIn = 0;                   ///< outer contours detected and kept
-  int contoursOut = 0;                  ///< of those, how many have a non-empty part inside the ROI
-  int holesIn = 0;                      ///< holes of the kept contours
-  PolygonSet clipped;                   ///< all contours together AND ROI (one clip; the mask
-                                        ///< check checks it; polygon parents link across contours)
-  double clippedArea = 0;               ///< area of `clipped`, px^2
+  int contoursIn = 0;                   ///< outer contours detected and kept (with an area)
+  /// Outer contours detected (after minArea) without an area: a lone pixel or a 1 px wide
+  /// straight line gives cv::findContours 1 or 2 points, and --approx can flatten small contours
+  /// onto a line. They contribute nothing, so they are counted here and not kept in `contours`.
+  int contoursDegenerate = 0;
+  int contoursOut = 0;     ///< of those, how many have a non-empty part inside the ROI
+  int holesIn = 0;         ///< holes of the kept contours
+  PolygonSet clipped;      ///< all contours together AND ROI (one clip; the mask
+                           ///< check checks it; polygon parents link across contours)
+  double clippedArea = 0;  ///< area of `clipped`, px^2
   /// Sum of the per-contour clipped areas; equals clippedArea (contours never overlap) up to
   /// rounding of output vertices; kept as a consistency figure.
   double contourClippedAreaSum = 0;

@@ -103,7 +103,8 @@ struct ImageRecord {
   int tagsRejected = 0;         ///< doubtful detections dropped (DetectorOptions::maxHamming, ...)
   std::vector<RoiRecord> rois;  ///< per named ROI; the figures below are for their union
   double roiArea = 0;           ///< area of the region (all ROIs minus the tags), px^2
-  int contoursIn = 0;           ///< outer contours detected and kept
+  int contoursIn = 0;           ///< outer contours detected and kept (with an area)
+  int contoursDegenerate = 0;   ///< outer contours without an area (ImageResult)
   int contoursOut = 0;          ///< of those, how many have a part inside the region
   double clippedArea = 0;       ///< area of the contours' parts inside the region, px^2
   /// Exact raster route; nothing when the mask check did not run (failed and no-roi images).
