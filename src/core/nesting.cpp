@@ -36,6 +36,7 @@ PolygonSet buildNesting(const Arrangement& arrangement, const Contours& contours
   std::vector<int> owner(rings.size(), -1);
   std::vector<int> polygonOf(rings.size(), -1);
   std::vector<int> holeIndexOf(rings.size(), -1);
+  std::vector<bool> dropped(rings.size(), false);  // collapsed to < 3 points by the rounding
   PolygonSet result;
   result.polygons.reserve(outerCount);
 
@@ -45,9 +46,12 @@ PolygonSet buildNesting(const Arrangement& arrangement, const Contours& contours
     path.reserve(ring.vertices.size());
     // Traced rings have the filled side on their left (outer rings counter-clockwise in the raw
     // frame); roiclip's output orientation is the opposite, as cv::findContours returns them.
+    // Distinct exact points may round to the same double: keep one of each run.
     for (auto it = ring.vertices.rbegin(); it != ring.vertices.rend(); ++it) {
-      path.push_back(frame.point(arrangement.vertices[*it]));
+      const Point p = frame.point(arrangement.vertices[*it]);
+      if (path.empty() || p != path.back()) path.push_back(p);
     }
+    while (path.size() > 1 && path.back() == path.front()) path.pop_back();
     return path;
   };
 
@@ -65,19 +69,32 @@ PolygonSet buildNesting(const Arrangement& arrangement, const Contours& contours
     if (!ring.hole) {
       Polygon polygon;
       polygon.outer = toPath(ring);
-      if (owner[r] >= 0) {
+      if (polygon.outer.size() < 3) {
+        dropped[r] = true;
+        continue;
+      }
+      if (owner[r] >= 0 && !dropped[owner[r]]) {
         polygon.parent = polygonOf[owner[owner[r]]];
         polygon.parentHole = holeIndexOf[owner[r]];
       }
       polygonOf[r] = int(result.polygons.size());
       result.polygons.push_back(std::move(polygon));
     } else {
+      if (owner[r] >= 0 && dropped[owner[r]]) {
+        dropped[r] = true;
+        continue;
+      }
       if (owner[r] < 0 || polygonOf[owner[r]] < 0) {
         throw InternalError("buildNesting: hole without an outer ring");
       }
+      Path hole = toPath(ring);
+      if (hole.size() < 3) {
+        dropped[r] = true;
+        continue;
+      }
       Polygon& outer = result.polygons[polygonOf[owner[r]]];
       holeIndexOf[r] = int(outer.holes.size());
-      outer.holes.push_back(toPath(ring));
+      outer.holes.push_back(std::move(hole));
     }
   }
   return result;

@@ -173,8 +173,8 @@ TEST(BatchRoi, BoardRoisAreSeparateAndTheirUnionIsTheRegion) {
   summary.total = 1;
   const std::string csv = rb::detail::summaryCsv(summary);
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 3);
-  EXPECT_NE(csv.find(",inspection,0\n"), std::string::npos) << csv;
-  EXPECT_NE(csv.find(",window,0\n"), std::string::npos) << csv;
+  EXPECT_NE(csv.find(",inspection,0,0\n"), std::string::npos) << csv;
+  EXPECT_NE(csv.find(",window,0,0\n"), std::string::npos) << csv;
   // NAME.json carries them and reads back.
   const auto back = rb::detail::parseRecord(rb::resultToJson(r, "scene_01.png"));
   ASSERT_TRUE(back.has_value());
