@@ -5,6 +5,9 @@
 // a ring's lowest-leftmost piece, that piece belongs to the ring bounding the region just
 // below; whether that ring is an outer ring or a hole, and whether the region is filled, says
 // who owns the ring. No point-in-polygon tests: linear after the sweep.
+#include <cmath>
+#include <limits>
+
 #include <roiclip/error.hpp>
 
 #include "output.hpp"
@@ -40,13 +43,19 @@ PolygonSet buildNesting(const Arrangement& arrangement, const Contours& contours
   result.polygons.reserve(outerCount);
 
   const OutputFrame frame(grid);  // each coordinate the double nearest its exact value
+  // Each vertex is converted once: where rings touch (every crossing of an even-odd result that
+  // two rings share) it would otherwise be converted again. NaN: not converted yet.
+  std::vector<Point> converted(arrangement.vertices.size(),
+                               Point{std::numeric_limits<double>::quiet_NaN(), 0.0});
   auto toPath = [&](const TracedRing& ring) {
     Path path;
     path.reserve(ring.vertices.size());
     // Traced rings have the filled side on their left (outer rings counter-clockwise in the raw
     // frame); roiclip's output orientation is the opposite, as cv::findContours returns them.
     for (auto it = ring.vertices.rbegin(); it != ring.vertices.rend(); ++it) {
-      path.push_back(frame.point(arrangement.vertices[*it]));
+      Point& q = converted[std::size_t(*it)];
+      if (std::isnan(q.x)) q = frame.point(arrangement.vertices[*it]);
+      path.push_back(q);
     }
     return path;
   };
