@@ -107,6 +107,9 @@ Contours traceContours(const Arrangement& arrangement) {
 
   Contours result;
   result.ringOfPiece.assign(pieces.size(), -1);
+  // At most one vertex per piece (a ring keeps a piece's start or drops it): the array never
+  // grows while rings point into it.
+  result.vertices.reserve(pieces.size());
   std::vector<int> onStack(vertexCount, -1);
   std::vector<int> stackV, stackE;
   for (std::size_t start = 0; start < pieces.size(); ++start) {
@@ -128,7 +131,7 @@ Contours traceContours(const Arrangement& arrangement) {
         const std::size_t k = std::size_t(onStack[w]);
         const std::size_t n = stackV.size() - k;
         TracedRing ring;
-        ring.vertices.reserve(n);
+        const std::size_t firstVertex = result.vertices.size();
         int minVertex = stackV[k];
         std::size_t minAt = 0;
         for (std::size_t i = 0; i < n; ++i) {
@@ -144,9 +147,11 @@ Contours traceContours(const Arrangement& arrangement) {
           // touch point, or after rounding to doubles it may cross the edge.
           if (outFirst[v + 1] - outFirst[v] > 1 ||
               crossSign(direction(pieces[in]), direction(pieces[out])) != 0) {
-            ring.vertices.push_back(v);
+            result.vertices.push_back(v);
           }
         }
+        ring.vertices = {result.vertices.data() + firstVertex,
+                         result.vertices.size() - firstVertex};
         const int inMin = stackE[k + (minAt + n - 1) % n];
         const int outMin = stackE[k + minAt];
         ring.referencePiece = std::min(inMin, outMin);
