@@ -5,9 +5,6 @@
 // a ring's lowest-leftmost piece, that piece belongs to the ring bounding the region just
 // below; whether that ring is an outer ring or a hole, and whether the region is filled, says
 // who owns the ring. No point-in-polygon tests: linear after the sweep.
-#include <cmath>
-#include <limits>
-
 #include <roiclip/error.hpp>
 
 #include "output.hpp"
@@ -43,19 +40,20 @@ PolygonSet buildNesting(const Arrangement& arrangement, const Contours& contours
   result.polygons.reserve(outerCount);
 
   const OutputFrame frame(grid);  // each coordinate the double nearest its exact value
-  // Each vertex is converted once: where rings touch (every crossing of an even-odd result that
-  // two rings share) it would otherwise be converted again. NaN: not converted yet.
-  std::vector<Point> converted(arrangement.vertices.size(),
-                               Point{std::numeric_limits<double>::quiet_NaN(), 0.0});
+  // Each vertex is converted once: where rings touch (at every crossing of an even-odd result
+  // that two rings share) the later ring copies the point from the earlier ring's path. A path's
+  // storage is reserved before it is filled and moves with the path, so the pointers stay
+  // valid; 8 bytes a vertex, not the 16 of a copy.
+  std::vector<const Point*> converted(arrangement.vertices.size(), nullptr);
   auto toPath = [&](const TracedRing& ring) {
     Path path;
     path.reserve(ring.vertices.size());
     // Traced rings have the filled side on their left (outer rings counter-clockwise in the raw
     // frame); roiclip's output orientation is the opposite, as cv::findContours returns them.
     for (auto it = ring.vertices.rbegin(); it != ring.vertices.rend(); ++it) {
-      Point& q = converted[std::size_t(*it)];
-      if (std::isnan(q.x)) q = frame.point(arrangement.vertices[*it]);
-      path.push_back(q);
+      const Point*& q = converted[std::size_t(*it)];
+      path.push_back(q != nullptr ? *q : frame.point(arrangement.vertices[*it]));
+      if (q == nullptr) q = &path.back();
     }
     return path;
   };
