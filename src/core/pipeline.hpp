@@ -199,6 +199,9 @@ struct Contours {
   /// Every ring's vertex ids, ring after ring (one allocation, not one per ring). The rings
   /// point into it: a Contours moves (the array keeps its storage) but is not copied.
   std::vector<int> vertices;
+  /// Vertices that more than one ring passes (where rings touch: every crossing that two rings
+  /// of an even-odd result share).
+  std::size_t sharedVertices = 0;
 
   Contours() = default;
   Contours(Contours&&) = default;

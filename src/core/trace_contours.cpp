@@ -70,6 +70,7 @@ Contours traceContours(const Arrangement& arrangement) {
   // without crossing. Around a vertex incoming and outgoing pieces alternate (each has the
   // filled side on its left), so this pairs them one to one.
   std::vector<int> pairOut(pieces.size(), -1);
+  std::size_t sharedVertices = 0;
   std::vector<Ray> rays;
   for (int v = 0; v < vertexCount; ++v) {
     const int outs = outFirst[v + 1] - outFirst[v];
@@ -81,6 +82,7 @@ Contours traceContours(const Arrangement& arrangement) {
       pairOut[std::size_t(incoming[std::size_t(inFirst[v])])] = outgoing[std::size_t(outFirst[v])];
       continue;
     }
+    ++sharedVertices;
     rays.clear();
     const auto along = [&](int e) {
       const IPoint d = direction(pieces[std::size_t(e)]);
@@ -107,6 +109,7 @@ Contours traceContours(const Arrangement& arrangement) {
 
   Contours result;
   result.ringOfPiece.assign(pieces.size(), -1);
+  result.sharedVertices = sharedVertices;
   // At most one vertex per piece (a ring keeps a piece's start or drops it): the array never
   // grows while rings point into it.
   result.vertices.reserve(pieces.size());
