@@ -35,6 +35,11 @@ bool ccwBefore(IPoint a, IPoint b) {
   return crossSign(a, b) > 0;
 }
 
+// c lies strictly inside the counter-clockwise sector from a to b (three distinct directions).
+bool inSectorCcw(IPoint a, IPoint b, IPoint c) {
+  return ccwBefore(a, b) ? ccwBefore(a, c) && ccwBefore(c, b) : ccwBefore(a, c) || ccwBefore(c, b);
+}
+
 // Compressed rows: for each vertex, the result pieces whose `end(piece)` is that vertex.
 template <class End>
 void buildRows(const Arrangement& arrangement, int vertexCount, End end, std::vector<int>& first,
@@ -83,11 +88,26 @@ Contours traceContours(const Arrangement& arrangement) {
       continue;
     }
     ++sharedVertices;
-    rays.clear();
     const auto along = [&](int e) {
       const IPoint d = direction(pieces[std::size_t(e)]);
       return pieces[std::size_t(e)].left == v ? d : IPoint{-d.x, -d.y};
     };
+    if (outs == 2) {
+      // Two rings touching (every crossing of an even-odd result): no sort. The incoming piece
+      // that lies counter-clockwise between the two outgoing ones pairs with the first of them.
+      const int o1 = outgoing[std::size_t(outFirst[v])],
+                o2 = outgoing[std::size_t(outFirst[v]) + 1];
+      const int i1 = incoming[std::size_t(inFirst[v])], i2 = incoming[std::size_t(inFirst[v]) + 1];
+      const IPoint d1 = along(o1), d2 = along(o2);
+      const bool first = inSectorCcw(d1, d2, along(i1));
+      if (first == inSectorCcw(d1, d2, along(i2))) {
+        throw InternalError("traceContours: pieces around a vertex do not alternate");
+      }
+      pairOut[std::size_t(i1)] = first ? o1 : o2;
+      pairOut[std::size_t(i2)] = first ? o2 : o1;
+      continue;
+    }
+    rays.clear();
     for (int i = outFirst[v]; i < outFirst[v + 1]; ++i) {
       rays.push_back({along(outgoing[std::size_t(i)]), outgoing[std::size_t(i)], true});
     }
