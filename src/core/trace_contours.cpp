@@ -40,6 +40,44 @@ bool inSectorCcw(IPoint a, IPoint b, IPoint c) {
   return ccwBefore(a, b) ? ccwBefore(a, c) && ccwBefore(c, b) : ccwBefore(a, c) || ccwBefore(c, b);
 }
 
+// Pairs the `count` pieces arriving at vertex v with the `count` (> 1) leaving it: each
+// incoming piece with the outgoing piece next to it clockwise. Apart from traceContours' loop
+// (rare on most inputs, and it keeps that loop small).
+[[gnu::noinline]] void pairAtSharedVertex(const std::vector<EdgePiece>& pieces, int v,
+                                          const int* outgoing, const int* incoming, int count,
+                                          std::vector<Ray>& rays, std::vector<int>& pairOut) {
+  const auto along = [&](int e) {
+    const IPoint d = direction(pieces[std::size_t(e)]);
+    return pieces[std::size_t(e)].left == v ? d : IPoint{-d.x, -d.y};
+  };
+  if (count == 2) {
+    // Two rings touching (every crossing of an even-odd result): no sort. The incoming piece
+    // that lies counter-clockwise between the two outgoing ones pairs with the first of them.
+    const int o1 = outgoing[0], o2 = outgoing[1], i1 = incoming[0], i2 = incoming[1];
+    const IPoint d1 = along(o1), d2 = along(o2);
+    const bool first = inSectorCcw(d1, d2, along(i1));
+    if (first == inSectorCcw(d1, d2, along(i2))) {
+      throw InternalError("traceContours: pieces around a vertex do not alternate");
+    }
+    pairOut[std::size_t(i1)] = first ? o1 : o2;
+    pairOut[std::size_t(i2)] = first ? o2 : o1;
+    return;
+  }
+  rays.clear();
+  for (int i = 0; i < count; ++i) rays.push_back({along(outgoing[i]), outgoing[i], true});
+  for (int i = 0; i < count; ++i) rays.push_back({along(incoming[i]), incoming[i], false});
+  std::sort(rays.begin(), rays.end(),
+            [](const Ray& a, const Ray& b) { return ccwBefore(a.d, b.d); });
+  for (std::size_t i = 0; i < rays.size(); ++i) {
+    if (rays[i].outgoing) continue;
+    const Ray& clockwise = rays[(i + rays.size() - 1) % rays.size()];
+    if (!clockwise.outgoing) {
+      throw InternalError("traceContours: pieces around a vertex do not alternate");
+    }
+    pairOut[std::size_t(rays[i].piece)] = clockwise.piece;
+  }
+}
+
 // Compressed rows: for each vertex, the result pieces whose `end(piece)` is that vertex.
 template <class End>
 void buildRows(const Arrangement& arrangement, int vertexCount, End end, std::vector<int>& first,
@@ -88,42 +126,8 @@ Contours traceContours(const Arrangement& arrangement) {
       continue;
     }
     ++sharedVertices;
-    const auto along = [&](int e) {
-      const IPoint d = direction(pieces[std::size_t(e)]);
-      return pieces[std::size_t(e)].left == v ? d : IPoint{-d.x, -d.y};
-    };
-    if (outs == 2) {
-      // Two rings touching (every crossing of an even-odd result): no sort. The incoming piece
-      // that lies counter-clockwise between the two outgoing ones pairs with the first of them.
-      const int o1 = outgoing[std::size_t(outFirst[v])],
-                o2 = outgoing[std::size_t(outFirst[v]) + 1];
-      const int i1 = incoming[std::size_t(inFirst[v])], i2 = incoming[std::size_t(inFirst[v]) + 1];
-      const IPoint d1 = along(o1), d2 = along(o2);
-      const bool first = inSectorCcw(d1, d2, along(i1));
-      if (first == inSectorCcw(d1, d2, along(i2))) {
-        throw InternalError("traceContours: pieces around a vertex do not alternate");
-      }
-      pairOut[std::size_t(i1)] = first ? o1 : o2;
-      pairOut[std::size_t(i2)] = first ? o2 : o1;
-      continue;
-    }
-    rays.clear();
-    for (int i = outFirst[v]; i < outFirst[v + 1]; ++i) {
-      rays.push_back({along(outgoing[std::size_t(i)]), outgoing[std::size_t(i)], true});
-    }
-    for (int i = inFirst[v]; i < inFirst[v + 1]; ++i) {
-      rays.push_back({along(incoming[std::size_t(i)]), incoming[std::size_t(i)], false});
-    }
-    std::sort(rays.begin(), rays.end(),
-              [](const Ray& a, const Ray& b) { return ccwBefore(a.d, b.d); });
-    for (std::size_t i = 0; i < rays.size(); ++i) {
-      if (rays[i].outgoing) continue;
-      const Ray& clockwise = rays[(i + rays.size() - 1) % rays.size()];
-      if (!clockwise.outgoing) {
-        throw InternalError("traceContours: pieces around a vertex do not alternate");
-      }
-      pairOut[std::size_t(rays[i].piece)] = clockwise.piece;
-    }
+    pairAtSharedVertex(pieces, v, &outgoing[std::size_t(outFirst[v])],
+                       &incoming[std::size_t(inFirst[v])], outs, rays, pairOut);
   }
   std::vector<char> used(pieces.size(), 0);
 
