@@ -5,6 +5,9 @@
 // a ring's lowest-leftmost piece, that piece belongs to the ring bounding the region just
 // below; whether that ring is an outer ring or a hole, and whether the region is filled, says
 // who owns the ring. No point-in-polygon tests: linear after the sweep.
+#include <cmath>
+#include <limits>
+
 #include <roiclip/error.hpp>
 
 #include "output.hpp"
@@ -41,6 +44,20 @@ PolygonSet buildNesting(const Arrangement& arrangement, const Contours& contours
   result.polygons.reserve(outerCount);
 
   const OutputFrame frame(grid);  // each coordinate the double nearest its exact value
+  // Each vertex is converted once: where rings touch (at every crossing of an even-odd result
+  // that two rings share) the later ring takes the point the earlier one converted. The cache
+  // (16 bytes a vertex, NaN until converted) costs a few instructions a vertex and saves about
+  // 90 a shared one: kept only where at least one vertex in 16 is shared. It holds values, not
+  // pointers into paths, since a ring that rounding collapses is dropped with its path.
+  const bool cache = contours.sharedVertices * 16 >= arrangement.vertices.size();
+  constexpr double kUnset = std::numeric_limits<double>::quiet_NaN();
+  std::vector<Point> converted(cache ? arrangement.vertices.size() : 0, Point{kUnset, kUnset});
+  auto pointOf = [&](int v) {
+    if (!cache) return frame.point(arrangement.vertices[std::size_t(v)]);
+    Point& q = converted[std::size_t(v)];
+    if (std::isnan(q.x)) q = frame.point(arrangement.vertices[std::size_t(v)]);
+    return q;
+  };
   auto toPath = [&](const TracedRing& ring) {
     Path path;
     path.reserve(ring.vertices.size());
@@ -48,7 +65,7 @@ PolygonSet buildNesting(const Arrangement& arrangement, const Contours& contours
     // frame); roiclip's output orientation is the opposite, as cv::findContours returns them.
     // Distinct exact points may round to the same double: keep one of each run.
     for (auto it = ring.vertices.rbegin(); it != ring.vertices.rend(); ++it) {
-      const Point p = frame.point(arrangement.vertices[*it]);
+      const Point p = pointOf(*it);
       if (path.empty() || p != path.back()) path.push_back(p);
     }
     while (path.size() > 1 && path.back() == path.front()) path.pop_back();

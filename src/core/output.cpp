@@ -75,49 +75,41 @@ bool timesPow2(double v, int e, double& out) {
   return true;
 }
 
-// The fast path of nearestDouble() for d < 2^64: c, about n / d (within two ulps), is checked by
-// one exact test in 128 bits, (2M - 1) d < 2n 2^-k < (2M + 1) d for c = M 2^k, and moved to its
-// neighbour while the test says so. Returns false where the test does not fit (the caller then
-// divides exactly): a binade's lowest mantissa, shifts beyond 128 bits, a result not normal.
-bool nearestFiltered(u128 n, u128 d, int exp2, double& out) {
-  if ((d >> 64) != 0 || n == 0) return false;
-  const int nb = bitLength(n);
-  // Approximations are enough here: the test below is exact.
-  const double approxN = double(std::uint64_t(n >> 64)) * 0x1p64 + double(std::uint64_t(n));
-  std::uint64_t c = bitsOf(approxN / double(std::uint64_t(d)));  // positive, normal
-  for (int attempt = 0; attempt < 3; ++attempt) {
-    const int field = int(c >> 52);
-    if (field == 0 || field == 2047) return false;
-    const std::uint64_t m = (c & ((std::uint64_t{1} << 52) - 1)) | (std::uint64_t{1} << 52);
-    const int k = field - 1075;                       // the double is m 2^k
-    if (m == (std::uint64_t{1} << 52)) return false;  // the neighbour below is half as far
-    const u128 lo = u128(2 * m - 1) * d, hi = u128(2 * m + 1) * d;  // < 2^118
-    int below = 0, above = 0;  // signs of 2n 2^-k - lo and of 2n 2^-k - hi
-    if (k <= 0) {
-      if (nb + 1 - k > 127) return false;
-      const u128 twice = n << (1 - k);
-      below = (twice > lo) - (twice < lo);
-      above = (twice > hi) - (twice < hi);
-    } else {
-      if (bitLength(hi) + k > 127) return false;
-      const u128 twice = n << 1, l = lo << k, h = hi << k;
-      below = (twice > l) - (twice < l);
-      above = (twice > h) - (twice < h);
-    }
-    if (below < 0) {
-      --c;  // the next double down (the mantissa is above the binade's lowest)
-      continue;
-    }
-    if (above > 0) {
-      ++c;  // the next double up
-      continue;
-    }
-    // On a midpoint: ties to the even mantissa.
-    if ((below == 0 || above == 0) && (m & 1) != 0) c += below == 0 ? -1 : 1;
-    return timesPow2(fromBits(c), exp2, out);
-  }
-  return false;
+// floor(n / d) and the remainder; the quotient must fit 64 bits. One instruction on x86-64.
+std::uint64_t divide(u128 n, std::uint64_t d, std::uint64_t& remainder) {
+#if defined(__x86_64__)
+  std::uint64_t q = 0, r = 0;
+  __asm__("divq %4"
+          : "=a"(q), "=d"(r)
+          : "a"(std::uint64_t(n)), "d"(std::uint64_t(n >> 64)), "rm"(d));
+  remainder = r;
+  return q;
+#else
+  const u128 q = n / d;
+  remainder = std::uint64_t(n - q * d);
+  return std::uint64_t(q);
+#endif
 }
+
+// nearestUnsigned() for n < 2^119 and d < 2^64 (the common case: a crossing's coordinate and
+// its W) in 64-bit words: the shifted dividend fits 128 bits, the shifted divisor 64 and the
+// quotient 56, so one 128-by-64-bit division gives q and the remainder. False (the caller then
+// takes nearestUnsigned()) for n >= 2^119 or a result that is not normal.
+bool nearestNarrow(u128 n, std::uint64_t d, int exp2, double& out) {
+  const int nb = bitLength(n), db = 64 - __builtin_clzll(d);
+  if (nb > 119) return false;
+  const int sh = 55 - (nb - db);  // n 2^sh / d lies in (2^54, 2^56)
+  std::uint64_t rem = 0;
+  const std::uint64_t q = sh >= 0 ? divide(n << sh, d, rem) : divide(n, d << -sh, rem);
+  const int drop = (64 - __builtin_clzll(q)) - 53;  // 2 or 3
+  std::uint64_t m = q >> drop;
+  const std::uint64_t rest = q & ((std::uint64_t{1} << drop) - 1);
+  const std::uint64_t half = std::uint64_t{1} << (drop - 1);
+  if (rest > half || (rest == half && (rem != 0 || (m & 1) != 0))) ++m;  // ties to even
+  return timesPow2(double(m), exp2 - sh + drop, out);
+}
+
+bool fitsInt64(i128 v) { return v == i128(std::int64_t(v)); }
 
 // Within 128 bits after the shift (the common case) in native integer division.
 bool fits128(int nb, int db) {
@@ -133,7 +125,8 @@ double nearestDouble(const i256& num, const i256& den, int exp2) {
   const u256 n = u256(negative ? i256(-num) : num);
   const u256 d = u256(den);
   double v = 0;
-  if (!(fits128(bitLength(n), bitLength(d)) && nearestFiltered(toU128(n), toU128(d), exp2, v))) {
+  const bool narrow = bitLength(n) <= 119 && bitLength(d) <= 64;
+  if (!(narrow && nearestNarrow(toU128(n), std::uint64_t(toU128(d)), exp2, v))) {
     v = fits128(bitLength(n), bitLength(d)) ? nearestUnsigned<u128>(toU128(n), toU128(d), exp2)
                                             : nearestUnsigned<u256>(n, d, exp2);
   }
@@ -176,17 +169,33 @@ double OutputFrame::coordinate(i128 units, i128 w, int axis) const {
       return n < 0 ? -v : v;
     }
   }
-  // (units / w + o) / (m * 2^e) = (units + o * w) / (w * m) * 2^-e
+  // (units / w + o) / (m * 2^e) = (units + o * w) / (w * m) * 2^-e. The common case (w a product
+  // of two grid differences, the origin and the scale's mantissa within 64 bits) in 64-bit
+  // factors, whose products are below 2^126, and one division (nearestNarrow()).
+  if (fitsInt64(o) && fitsInt64(w) && fitsInt64(scaleMantissa_)) {
+    const i128 d = i128(std::int64_t(w)) * std::int64_t(scaleMantissa_);
+    i128 n = 0;
+    if ((d >> 64) == 0 &&
+        !__builtin_add_overflow(units, i128(std::int64_t(o)) * std::int64_t(w), &n)) {
+      if (n == 0) return 0.0;
+      double v = 0;
+      if (nearestNarrow(n < 0 ? u128(-n) : u128(n), std::uint64_t(d), -scaleExponent_, v)) {
+        return n < 0 ? -v : v;
+      }
+    }
+  }
+  return coordinateExact(units, w, o);
+}
+
+double OutputFrame::coordinateExact(i128 units, i128 w, i128 o) const {
   i128 ow = 0, n = 0, d = 0;
   if (!__builtin_mul_overflow(o, w, &ow) && !__builtin_add_overflow(units, ow, &n) &&
       !__builtin_mul_overflow(w, scaleMantissa_, &d) && n > -(i128(1) << 126) &&
       n < (i128(1) << 126)) {
     if (n == 0) return 0.0;
     const u128 un = n < 0 ? u128(-n) : u128(n);
-    double v = 0;
-    if (nearestFiltered(un, u128(d), -scaleExponent_, v)) return n < 0 ? -v : v;
     if (fits128(bitLength(un), bitLength(u128(d)))) {
-      v = nearestUnsigned<u128>(un, u128(d), -scaleExponent_);
+      const double v = nearestUnsigned<u128>(un, u128(d), -scaleExponent_);
       return n < 0 ? -v : v;
     }
   }

@@ -28,6 +28,9 @@ class OutputFrame {
   }
 
  private:
+  /// coordinate() beyond its 64-bit fast paths: exact division in 128 or 256 bits.
+  [[nodiscard]] double coordinateExact(i128 units, i128 w, i128 originUnits) const;
+
   i128 originUnits_[2] = {0, 0};  ///< origin * scale, exact (|.| <= 2^100)
   i128 scaleMantissa_ = 1;        ///< scale = scaleMantissa_ * 2^scaleExponent_, mantissa odd
   int scaleExponent_ = 0;

@@ -7,6 +7,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <iterator>
 #include <optional>
 #include <vector>
 
@@ -164,11 +165,27 @@ Arrangement splitEdges(const std::vector<InputEdge>& edges,
 Arrangement splitEdges(const std::vector<InputEdge>& edges,
                        const std::vector<ExactEdge>& exactEdges, const BooleanSpec& spec);
 
+/// A ring's vertex ids: a run of Contours::vertices, the one array of every ring's vertices.
+struct VertexRun {
+  const int* first = nullptr;
+  std::size_t count = 0;
+  [[nodiscard]] std::size_t size() const { return count; }
+  [[nodiscard]] const int* begin() const { return first; }
+  [[nodiscard]] const int* end() const { return first + count; }
+  [[nodiscard]] std::reverse_iterator<const int*> rbegin() const {
+    return std::reverse_iterator<const int*>(end());
+  }
+  [[nodiscard]] std::reverse_iterator<const int*> rend() const {
+    return std::reverse_iterator<const int*>(begin());
+  }
+  int operator[](std::size_t i) const { return first[i]; }
+};
+
 /// A closed ring traced from result pieces, filled on its left.
 struct TracedRing {
   /// vertex ids, each once; straight-on vertices removed except touch points (where other
   /// result pieces meet the ring)
-  std::vector<int> vertices;
+  VertexRun vertices;
   int referencePiece = -1;  ///< its lowest piece at its leftmost vertex
   bool hole = false;        ///< true when the region inside is not filled
 };
@@ -179,6 +196,19 @@ struct TracedRing {
 struct Contours {
   std::vector<TracedRing> rings;
   std::vector<int> ringOfPiece;  ///< ring index of each result piece, -1 for the others
+  /// Every ring's vertex ids, ring after ring (one allocation, not one per ring). The rings
+  /// point into it: a Contours moves (the array keeps its storage) but is not copied.
+  std::vector<int> vertices;
+  /// Vertices that more than one ring passes (where rings touch: every crossing that two rings
+  /// of an even-odd result share).
+  std::size_t sharedVertices = 0;
+
+  Contours() = default;
+  Contours(Contours&&) = default;
+  Contours& operator=(Contours&&) = default;
+  Contours(const Contours&) = delete;
+  Contours& operator=(const Contours&) = delete;
+  ~Contours() = default;
 };
 Contours traceContours(const Arrangement& arrangement);
 

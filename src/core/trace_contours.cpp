@@ -35,6 +35,49 @@ bool ccwBefore(IPoint a, IPoint b) {
   return crossSign(a, b) > 0;
 }
 
+// c lies strictly inside the counter-clockwise sector from a to b (three distinct directions).
+bool inSectorCcw(IPoint a, IPoint b, IPoint c) {
+  return ccwBefore(a, b) ? ccwBefore(a, c) && ccwBefore(c, b) : ccwBefore(a, c) || ccwBefore(c, b);
+}
+
+// Pairs the `count` pieces arriving at vertex v with the `count` (> 1) leaving it: each
+// incoming piece with the outgoing piece next to it clockwise. Apart from traceContours' loop
+// (rare on most inputs, and it keeps that loop small).
+[[gnu::noinline]] void pairAtSharedVertex(const std::vector<EdgePiece>& pieces, int v,
+                                          const int* outgoing, const int* incoming, int count,
+                                          std::vector<Ray>& rays, std::vector<int>& pairOut) {
+  const auto along = [&](int e) {
+    const IPoint d = direction(pieces[std::size_t(e)]);
+    return pieces[std::size_t(e)].left == v ? d : IPoint{-d.x, -d.y};
+  };
+  if (count == 2) {
+    // Two rings touching (every crossing of an even-odd result): no sort. The incoming piece
+    // that lies counter-clockwise between the two outgoing ones pairs with the first of them.
+    const int o1 = outgoing[0], o2 = outgoing[1], i1 = incoming[0], i2 = incoming[1];
+    const IPoint d1 = along(o1), d2 = along(o2);
+    const bool first = inSectorCcw(d1, d2, along(i1));
+    if (first == inSectorCcw(d1, d2, along(i2))) {
+      throw InternalError("traceContours: pieces around a vertex do not alternate");
+    }
+    pairOut[std::size_t(i1)] = first ? o1 : o2;
+    pairOut[std::size_t(i2)] = first ? o2 : o1;
+    return;
+  }
+  rays.clear();
+  for (int i = 0; i < count; ++i) rays.push_back({along(outgoing[i]), outgoing[i], true});
+  for (int i = 0; i < count; ++i) rays.push_back({along(incoming[i]), incoming[i], false});
+  std::sort(rays.begin(), rays.end(),
+            [](const Ray& a, const Ray& b) { return ccwBefore(a.d, b.d); });
+  for (std::size_t i = 0; i < rays.size(); ++i) {
+    if (rays[i].outgoing) continue;
+    const Ray& clockwise = rays[(i + rays.size() - 1) % rays.size()];
+    if (!clockwise.outgoing) {
+      throw InternalError("traceContours: pieces around a vertex do not alternate");
+    }
+    pairOut[std::size_t(rays[i].piece)] = clockwise.piece;
+  }
+}
+
 // Compressed rows: for each vertex, the result pieces whose `end(piece)` is that vertex.
 template <class End>
 void buildRows(const Arrangement& arrangement, int vertexCount, End end, std::vector<int>& first,
@@ -70,6 +113,7 @@ Contours traceContours(const Arrangement& arrangement) {
   // without crossing. Around a vertex incoming and outgoing pieces alternate (each has the
   // filled side on its left), so this pairs them one to one.
   std::vector<int> pairOut(pieces.size(), -1);
+  std::size_t sharedVertices = 0;
   std::vector<Ray> rays;
   for (int v = 0; v < vertexCount; ++v) {
     const int outs = outFirst[v + 1] - outFirst[v];
@@ -81,32 +125,18 @@ Contours traceContours(const Arrangement& arrangement) {
       pairOut[std::size_t(incoming[std::size_t(inFirst[v])])] = outgoing[std::size_t(outFirst[v])];
       continue;
     }
-    rays.clear();
-    const auto along = [&](int e) {
-      const IPoint d = direction(pieces[std::size_t(e)]);
-      return pieces[std::size_t(e)].left == v ? d : IPoint{-d.x, -d.y};
-    };
-    for (int i = outFirst[v]; i < outFirst[v + 1]; ++i) {
-      rays.push_back({along(outgoing[std::size_t(i)]), outgoing[std::size_t(i)], true});
-    }
-    for (int i = inFirst[v]; i < inFirst[v + 1]; ++i) {
-      rays.push_back({along(incoming[std::size_t(i)]), incoming[std::size_t(i)], false});
-    }
-    std::sort(rays.begin(), rays.end(),
-              [](const Ray& a, const Ray& b) { return ccwBefore(a.d, b.d); });
-    for (std::size_t i = 0; i < rays.size(); ++i) {
-      if (rays[i].outgoing) continue;
-      const Ray& clockwise = rays[(i + rays.size() - 1) % rays.size()];
-      if (!clockwise.outgoing) {
-        throw InternalError("traceContours: pieces around a vertex do not alternate");
-      }
-      pairOut[std::size_t(rays[i].piece)] = clockwise.piece;
-    }
+    ++sharedVertices;
+    pairAtSharedVertex(pieces, v, &outgoing[std::size_t(outFirst[v])],
+                       &incoming[std::size_t(inFirst[v])], outs, rays, pairOut);
   }
   std::vector<char> used(pieces.size(), 0);
 
   Contours result;
   result.ringOfPiece.assign(pieces.size(), -1);
+  result.sharedVertices = sharedVertices;
+  // At most one vertex per piece (a ring keeps a piece's start or drops it): the array never
+  // grows while rings point into it.
+  result.vertices.reserve(pieces.size());
   std::vector<int> onStack(vertexCount, -1);
   std::vector<int> stackV, stackE;
   for (std::size_t start = 0; start < pieces.size(); ++start) {
@@ -128,7 +158,7 @@ Contours traceContours(const Arrangement& arrangement) {
         const std::size_t k = std::size_t(onStack[w]);
         const std::size_t n = stackV.size() - k;
         TracedRing ring;
-        ring.vertices.reserve(n);
+        const std::size_t firstVertex = result.vertices.size();
         int minVertex = stackV[k];
         std::size_t minAt = 0;
         for (std::size_t i = 0; i < n; ++i) {
@@ -144,9 +174,11 @@ Contours traceContours(const Arrangement& arrangement) {
           // touch point, or after rounding to doubles it may cross the edge.
           if (outFirst[v + 1] - outFirst[v] > 1 ||
               crossSign(direction(pieces[in]), direction(pieces[out])) != 0) {
-            ring.vertices.push_back(v);
+            result.vertices.push_back(v);
           }
         }
+        ring.vertices = {result.vertices.data() + firstVertex,
+                         result.vertices.size() - firstVertex};
         const int inMin = stackE[k + (minAt + n - 1) % n];
         const int outMin = stackE[k + minAt];
         ring.referencePiece = std::min(inMin, outMin);

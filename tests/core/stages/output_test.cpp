@@ -121,7 +121,7 @@ TEST(StageOutput, NearestDoubleRoundsHalfToEvenAndHandlesSubnormals) {
   // 2^53 + 1 is a tie between 2^53 and 2^53 + 2: to even (2^53); 2^53 + 3 goes up to 2^53 + 4.
   EXPECT_EQ(detail::nearestDouble(i256(1) << 53 | 1, 1, 0), 0x1p53);
   EXPECT_EQ(detail::nearestDouble((i256(1) << 53) + 3, 1, 0), 0x1p53 + 4);
-  // Ties inside a binade (the filtered path): 3 * 2^52 + 1 lies halfway between 3 * 2^52 (even
+  // Ties inside a binade: 3 * 2^52 + 1 lies halfway between 3 * 2^52 (even
   // mantissa) and 3 * 2^52 + 2; 3 * 2^52 + 3 between + 2 (odd) and + 4 (even). Also as n / 5.
   const i256 three = i256(3) << 52;
   EXPECT_EQ(detail::nearestDouble(three + 1, 1, 0), 0x1.8p53);
@@ -138,6 +138,49 @@ TEST(StageOutput, NearestDoubleRoundsHalfToEvenAndHandlesSubnormals) {
   EXPECT_EQ(detail::nearestDouble(3, 1, -1076), nearest(cpp_rational(3) / twoTo(1076)));
   EXPECT_EQ(detail::nearestDouble(1, 3, -1070), nearest(cpp_rational(1) / 3 / twoTo(1070)));
   EXPECT_EQ(detail::nearestDouble(0, 5, 0), 0.0);
+}
+
+// The 128-by-64-bit division path (dividend below 2^119, divisor below 2^64; a crossing's
+// coordinate and its W) on exact ties between two doubles and one unit either side of them,
+// with the quotient shifted both ways (n / d above and below 2^55), and past that path's limits.
+TEST(StageOutput, NearestDoubleByDivisionRoundsTiesAndNearTies) {
+  using detail::i256;
+  std::mt19937_64 rng(23);
+  int ties = 0;
+  for (int i = 0; i < 4000; ++i) {
+    const int db = 1 + int(rng() % 64);
+    const std::uint64_t d = (std::uint64_t{1} << (db - 1)) | (rng() >> (65 - db));
+    // A midpoint (2M + 1) / 2 between the doubles M and M + 1 (53-bit M), times d and 2^t.
+    const std::uint64_t m = (std::uint64_t{1} << 52) | (rng() >> 12);
+    const int room = 119 - 54 - db;  // the bits left below 2^119
+    const int t = room > 0 ? int(rng() % std::uint64_t(room + 1)) : 0;
+    const i256 tie = (i256(2 * m + 1) * d) << t;
+    const int exp2 = -1 - int(rng() % 40);
+    for (const int off : {0, 1, -1, 2}) {
+      const i256 n = tie + off;
+      const double want =
+          nearest(cpp_rational(n) / cpp_rational(i256(d)) * twoTo(exp2 + 40) / twoTo(40));
+      ASSERT_EQ(detail::nearestDouble(n, i256(d), exp2), want) << i << " off " << off;
+      ASSERT_EQ(detail::nearestDouble(-n, i256(d), exp2), -want) << i << " off " << off;
+    }
+    // The tie (M + 1/2) 2^(t + 1 + exp2) went to the even one of M 2^(t + 1 + exp2) and the next.
+    const double low = std::ldexp(double(m), exp2 + t + 1);
+    const double got = detail::nearestDouble(tie, i256(d), exp2);
+    ASSERT_EQ(got, (m & 1) == 0 ? low : std::nextafter(low, INFINITY)) << i;
+    ++ties;
+  }
+  EXPECT_EQ(ties, 4000);
+  // Past the path's limits (dividend of 119 to 126 bits, divisor of 65 bits) and at them.
+  for (const int nb : {118, 119, 120, 126}) {
+    for (const int dbits : {1, 63, 64, 65}) {
+      const i256 n = (i256(1) << (nb - 1)) + (i256(rng()) << 20) + 12345;
+      const i256 d =
+          (i256(1) << (dbits - 1)) + (dbits > 20 ? i256(rng() >> (65 - dbits + 1)) : 0) + 1;
+      EXPECT_EQ(detail::nearestDouble(n, d, -7),
+                nearest(cpp_rational(n) / cpp_rational(d) / twoTo(7)))
+          << nb << " " << dbits;
+    }
+  }
 }
 
 // The snapping rule and its inverse: grid points come back exactly.
