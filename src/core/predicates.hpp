@@ -55,9 +55,6 @@ struct XPoint {
         fx(pw == 1 ? double(px) : double(px) / double(pw)),
         fy(pw == 1 ? double(py) : double(py) / double(pw)) {}
   explicit XPoint(IPoint p) : x(p.x), y(p.y), w(1), fx(double(p.x)), fy(double(p.y)) {}
-  // Same as fx, fy: nesting.cpp's output conversion still reads them (its owner changes it).
-  [[nodiscard]] double dx() const { return fx; }
-  [[nodiscard]] double dy() const { return fy; }
 };
 
 inline i256 wide(i128 v) { return i256(v); }
