@@ -149,7 +149,7 @@ TEST(StageOutput, NearestDoubleByDivisionRoundsTiesAndNearTies) {
   int ties = 0;
   for (int i = 0; i < 4000; ++i) {
     const int db = 1 + int(rng() % 64);
-    const std::uint64_t d = (std::uint64_t{1} << (db - 1)) | (rng() >> (65 - db));
+    const std::uint64_t d = (std::uint64_t{1} << (db - 1)) | (db > 1 ? rng() >> (65 - db) : 0);
     // A midpoint (2M + 1) / 2 between the doubles M and M + 1 (53-bit M), times d and 2^t.
     const std::uint64_t m = (std::uint64_t{1} << 52) | (rng() >> 12);
     const int room = 119 - 54 - db;  // the bits left below 2^119
