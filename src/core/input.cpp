@@ -3,6 +3,7 @@
 #include <cmath>
 #include <optional>
 #include <string>
+#include <utility>
 
 #include <roiclip/error.hpp>
 #include <roiclip/roiclip.hpp>
@@ -69,6 +70,7 @@ void mergeStraightRuns(std::vector<IPoint>& ring) {
 void snapPath(const Path& path, std::size_t pathIndex, Operand label, const Grid& grid,
               std::vector<IPoint>& out) {
   out.clear();
+  out.reserve(path.size());
   for (std::size_t i = 0; i < path.size(); ++i) {
     const IPoint q{snap(path[i].x, grid, grid.origin.x, Axis::X, pathIndex, i, label),
                    snap(path[i].y, grid, grid.origin.y, Axis::Y, pathIndex, i, label)};
@@ -86,12 +88,13 @@ void checkGrid(const Grid& grid) {
 std::vector<std::vector<IPoint>> snapRings(const Paths& paths, int operand, const Grid& grid) {
   checkGrid(grid);
   std::vector<std::vector<IPoint>> rings;
+  rings.reserve(paths.size());
   std::vector<IPoint> ring;
   for (std::size_t p = 0; p < paths.size(); ++p) {
     snapPath(paths[p], p, operand == 0 ? Operand::Subject : Operand::Clip, grid, ring);
     while (ring.size() > 1 && ring.back() == ring.front()) ring.pop_back();
     mergeStraightRuns(ring);
-    if (ring.size() >= 2) rings.push_back(ring);  // a point encloses nothing
+    if (ring.size() >= 2) rings.push_back(std::move(ring));  // a point encloses nothing
   }
   return rings;
 }
