@@ -7,6 +7,7 @@
 // who owns the ring. No point-in-polygon tests: linear after the sweep.
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include <roiclip/error.hpp>
 
@@ -83,35 +84,32 @@ PolygonSet buildNesting(const Arrangement& arrangement, const Contours& contours
     } else {
       owner[r] = rings[below].hole ? owner[below] : below;
     }
+    // A ring inside a ring that rounding collapsed is smaller still: dropped with it.
+    if (owner[r] >= 0 && dropped[owner[r]]) {
+      dropped[r] = true;
+      continue;
+    }
+    if (ring.hole && (owner[r] < 0 || polygonOf[owner[r]] < 0)) {
+      throw InternalError("buildNesting: hole without an outer ring");
+    }
+    Path path = toPath(ring);
+    if (path.size() < 3) {  // distinct exact points that round to fewer than 3 doubles
+      dropped[r] = true;
+      continue;
+    }
     if (!ring.hole) {
       Polygon polygon;
-      polygon.outer = toPath(ring);
-      if (polygon.outer.size() < 3) {
-        dropped[r] = true;
-        continue;
-      }
-      if (owner[r] >= 0 && !dropped[owner[r]]) {
+      polygon.outer = std::move(path);
+      if (owner[r] >= 0) {
         polygon.parent = polygonOf[owner[owner[r]]];
         polygon.parentHole = holeIndexOf[owner[r]];
       }
       polygonOf[r] = int(result.polygons.size());
       result.polygons.push_back(std::move(polygon));
     } else {
-      if (owner[r] >= 0 && dropped[owner[r]]) {
-        dropped[r] = true;
-        continue;
-      }
-      if (owner[r] < 0 || polygonOf[owner[r]] < 0) {
-        throw InternalError("buildNesting: hole without an outer ring");
-      }
-      Path hole = toPath(ring);
-      if (hole.size() < 3) {
-        dropped[r] = true;
-        continue;
-      }
       Polygon& outer = result.polygons[polygonOf[owner[r]]];
       holeIndexOf[r] = int(outer.holes.size());
-      outer.holes.push_back(std::move(hole));
+      outer.holes.push_back(std::move(path));
     }
   }
   return result;
