@@ -13,7 +13,7 @@ constexpr int kExitUsage = 1;
 constexpr int kExitBadInput = 2;
 constexpr int kExitCannotWrite = 3;
 constexpr int kExitInternal = 4;
-constexpr int kExitImagesFailed = 5;   ///< `run` only
+constexpr int kExitImagesFailed = 5;   ///< `run` and `merge` only
 constexpr int kExitLimit = 6;          ///< geometry commands: a work limit (--max-crossings)
 constexpr int kExitInterrupted = 130;  ///< `run` only (Ctrl-C)
 

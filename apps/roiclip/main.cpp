@@ -88,7 +88,7 @@ int runMain(int argc, char** argv) {
 #ifdef ROICLIP_HAVE_BATCH
   RunCommand runCommand(app);
   auto* run = runCommand.subcommand();
-  addMergeCommand(app);
+  MergeCommand merge(app);
 #else
   auto* run = app.add_subcommand("run", "process a folder of images (not built: needs AprilTag)");
   run->allow_extras();
@@ -106,6 +106,9 @@ int runMain(int argc, char** argv) {
   }
 
   if (help.subcommand()->parsed()) return help.execute();
+#ifdef ROICLIP_HAVE_BATCH
+  if (merge.subcommand()->parsed()) return merge.exitCode();
+#endif
   if (run->parsed()) {
 #ifdef ROICLIP_HAVE_BATCH
     return runCommand.execute();

@@ -8,6 +8,8 @@
 
 #include <roiclip/batch/merge.hpp>
 
+#include "exit_codes.hpp"
+
 namespace roiclip::app {
 
 namespace {
@@ -26,27 +28,31 @@ Examples:
   roiclip merge all shards/*
 
 Exit codes:
-  0  OUT written (whatever the images' statuses: see summary.csv)
+  0  OUT written, every image in it ok
   1  command-line usage error
   2  invalid input: a shard without a readable summary.json, options that differ between
      shards (the message names the option), an image in two shards, OUT one of the shards
   3  OUT cannot be created or written
   4  internal error (a bug in roiclip: please report the input)
+  5  OUT written, but at least one image in it failed, had no ROI or failed its mask
+     check, or a shard was interrupted (see summary.csv), as `roiclip run` over all the
+     images would have said
 )";
 
 }  // namespace
 
-CLI::App* addMergeCommand(CLI::App& app, std::ostream& out) {
+MergeCommand::MergeCommand(CLI::App& app, std::ostream& out) {
   auto options = std::make_shared<batch::MergeOptions>();
   auto noReport = std::make_shared<bool>(false);
   CLI::App* cmd = app.add_subcommand("merge", "combine the output folders of several runs");
+  cmd_ = cmd;
   cmd->footer(kMergeHelp);
   cmd->add_option("OUT", options->output, "merged output folder (created if missing)")->required();
   cmd->add_option("DIR", options->shards, "output folders of `roiclip run` (shards)")
       ->required()
       ->check(CLI::ExistingDirectory);
   cmd->add_flag("--no-report", *noReport, "do not write report.html");
-  cmd->callback([options, noReport, &out] {
+  cmd->callback([this, options, noReport, &out] {
     options->writeReport = !*noReport;
     const batch::RunSummary s = batch::merge(*options);
     out << "roiclip merge: " << s.images.size() << " of " << s.total << " images from "
@@ -54,8 +60,8 @@ CLI::App* addMergeCommand(CLI::App& app, std::ostream& out) {
         << s.failed << " failed, " << s.mismatched << " mask-mismatch"
         << (s.interrupted ? " (a shard was interrupted)" : "") << "; summary in "
         << (options->output / "summary.csv").string() << "\n";
+    exitCode_ = s.allOk() ? kExitOk : kExitImagesFailed;
   });
-  return cmd;
 }
 
 }  // namespace roiclip::app

@@ -110,6 +110,27 @@ TEST_F(RunCli, ExitCodes) {
 
 // Everything the run would refuse is refused before the output folder exists: exit 2 and one
 // line naming the option and the problem in plain words.
+// `merge` says what `run` over all the images would have said: 0 when every image is ok, 5
+// (with OUT written) when one is not.
+TEST_F(RunCli, MergeExitCodeFollowsTheImages) {
+  ASSERT_EQ(runIn("").exitCode, 0);
+  fs::create_directories(dir_ / "in2");
+  fs::copy_file(kData / "batch" / "corrupt.png", dir_ / "in2" / "b.png");
+  ASSERT_EQ(run("run " + quoted(dir_ / "in2") + " -o " + quoted(dir_ / "out2")).exitCode, 5);
+
+  const CliRun good = run("merge " + quoted(dir_ / "m1") + " " + quoted(dir_ / "out"));
+  EXPECT_EQ(good.exitCode, 0) << good.err;
+  const CliRun bad = run("merge " + quoted(dir_ / "m2") + " " + quoted(dir_ / "out") + " " +
+                         quoted(dir_ / "out2"));
+  EXPECT_EQ(bad.exitCode, 5) << bad.err;
+  EXPECT_NE(bad.out.find("1 ok"), std::string::npos) << bad.out;
+  EXPECT_NE(bad.out.find("1 failed"), std::string::npos) << bad.out;
+  const std::string summary = readText(dir_ / "m2" / "summary.csv");
+  EXPECT_NE(summary.find("a.png,ok,"), std::string::npos) << summary;
+  EXPECT_NE(summary.find("b.png,failed,"), std::string::npos) << summary;
+  EXPECT_TRUE(fs::exists(dir_ / "m2" / "a.json"));
+}
+
 TEST_F(RunCli, BadOptionsLeaveNoOutputFolder) {
   const struct {
     std::string args;
