@@ -34,10 +34,12 @@ inline std::int64_t snap(double v, const Grid& grid, double originCoordinate, Ax
   return *units;
 }
 
-// True when b lies on the way from a to c, going straight on (exact).
-bool straightThrough(IPoint a, IPoint b, IPoint c) {
-  if (orient(a, b, c) != 0) return false;
-  return i128(b.x - a.x) * (c.x - b.x) + i128(b.y - a.y) * (c.y - b.y) > 0;
+// True when b lies on the way from a to c, going straight on (exact). Snapped points lie within
+// +-2^30 units (orientInGrid()): each product of differences is at most 2^62 in magnitude, so the
+// dot product's sign is decided by comparing its two terms in int64.
+inline bool straightThrough(IPoint a, IPoint b, IPoint c) {
+  if (orientInGrid(a, b, c) != 0) return false;
+  return (b.x - a.x) * (c.x - b.x) > -((b.y - a.y) * (c.y - b.y));
 }
 
 // Drops vertices where a closed ring goes straight on: pixel chains become a few long edges.
@@ -66,15 +68,32 @@ void mergeStraightRuns(std::vector<IPoint>& ring) {
   ring.erase(ring.begin(), ring.begin() + std::ptrdiff_t(begin));
 }
 
-// Snap one path: validated grid points with consecutive repeats removed.
+// Snap one path: validated grid points with consecutive repeats removed. Grid::toUnits() inline
+// for both coordinates of a point at once (the same operations: round v * scale to an integer,
+// subtract origin * scale, test the range); a point it cannot take (a coordinate out of range,
+// not finite, or too large for the short rounding) goes through snap(), which gives the same
+// units or throws naming the path, vertex and axis.
 void snapPath(const Path& path, std::size_t pathIndex, Operand label, const Grid& grid,
               std::vector<IPoint>& out) {
+  constexpr double kRound = 6755399441055744.0;  // 1.5 * 2^52, as detail::roundToUnits
+  constexpr double kMax = double(Grid::kMaxUnits);
   out.clear();
   out.reserve(path.size());
+  const double s = grid.scale, ox = grid.origin.x * s, oy = grid.origin.y * s;
+  IPoint last{std::int64_t{1} << 62, 0};  // no snapped point
   for (std::size_t i = 0; i < path.size(); ++i) {
-    const IPoint q{snap(path[i].x, grid, grid.origin.x, Axis::X, pathIndex, i, label),
-                   snap(path[i].y, grid, grid.origin.y, Axis::Y, pathIndex, i, label)};
-    if (out.empty() || out.back() != q) out.push_back(q);
+    const double ux = path[i].x * s, uy = path[i].y * s;
+    const double dx = ((ux + kRound) - kRound) - ox, dy = ((uy + kRound) - kRound) - oy;
+    IPoint q;
+    if (std::fabs(ux) < 0x1p51 && std::fabs(uy) < 0x1p51 && std::fabs(dx) <= kMax &&
+        std::fabs(dy) <= kMax) {
+      q = {std::int64_t(dx), std::int64_t(dy)};
+    } else {
+      q = {snap(path[i].x, grid, grid.origin.x, Axis::X, pathIndex, i, label),
+           snap(path[i].y, grid, grid.origin.y, Axis::Y, pathIndex, i, label)};
+    }
+    if (q != last) out.push_back(q);
+    last = q;
   }
 }
 
