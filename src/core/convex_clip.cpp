@@ -45,18 +45,22 @@ XPoint crossing(const Vertex& from, IPoint hA, IPoint hB) {
   return x;
 }
 
-// One Sutherland-Hodgman step: keep the part of the closed path on the left of hA -> hB
-// (points on the line count as inside). Writes into `out` (cleared first).
-void clipHalfPlane(const std::vector<Vertex>& in, IPoint hA, IPoint hB, std::vector<Vertex>& out) {
-  out.clear();
+// orient() of a path vertex: grid points in int64.
+inline int sideOf(IPoint hA, IPoint hB, const XPoint& p) {
+  return p.w == 1 ? orientInGrid(hA, hB, IPoint{std::int64_t(p.x), std::int64_t(p.y)})
+                  : orient(hA, hB, p);
+}
+
+// One Sutherland-Hodgman step over the edges in[i] -> in[i + 1] and in[n - 1] -> a vertex on
+// side `endSide` of hA -> hB: keep the part on the left (points on the line count as inside),
+// appended to `out`.
+void clipEdges(const std::vector<Vertex>& in, int endSide, IPoint hA, IPoint hB,
+               std::vector<Vertex>& out) {
   const std::size_t n = in.size();
-  if (n == 0) return;
-  out.reserve(n + 16);  // usually a few crossings more than the input (no growth by doubling)
-  const int firstSide = orient(hA, hB, in[0].p);
-  int sp = firstSide;
+  int sp = sideOf(hA, hB, in[0].p);
   for (std::size_t i = 0; i < n; ++i) {
     const Vertex& p = in[i];
-    const int sq = i + 1 < n ? orient(hA, hB, in[i + 1].p) : firstSide;
+    const int sq = i + 1 < n ? sideOf(hA, hB, in[i + 1].p) : endSide;
     if (sp >= 0) {
       out.push_back(p);
       if (sq < 0) {
@@ -74,38 +78,22 @@ void clipHalfPlane(const std::vector<Vertex>& in, IPoint hA, IPoint hB, std::vec
   }
 }
 
-// orient() of a chain vertex: grid points in int64.
-inline int sideOf(IPoint hA, IPoint hB, const XPoint& p) {
-  return p.w == 1 ? orientInGrid(hA, hB, IPoint{std::int64_t(p.x), std::int64_t(p.y)})
-                  : orient(hA, hB, p);
+// One step on a closed path (its last edge back to in[0]). Writes into `out` (cleared first).
+void clipHalfPlane(const std::vector<Vertex>& in, IPoint hA, IPoint hB, std::vector<Vertex>& out) {
+  out.clear();
+  if (in.empty()) return;
+  out.reserve(in.size() +
+              16);  // usually a few crossings more than the input (no growth by doubling)
+  clipEdges(in, sideOf(hA, hB, in[0].p), hA, hB, out);
 }
 
-// One Sutherland-Hodgman step on an open chain in[0] .. in[n-1], `end` (both in C, so inside
-// the half-plane): the same as clipHalfPlane() emits for these edges of a closed path, `end` not
-// emitted (it starts the next chain). in[0] always comes out first.
+// One step on an open chain in[0] .. in[n-1], `end` (both in C, so inside the half-plane): what
+// clipHalfPlane() emits for these edges of a closed path, `end` not emitted (it starts the next
+// chain). in[0] always comes out first.
 void clipChainHalfPlane(const std::vector<Vertex>& in, IPoint end, IPoint hA, IPoint hB,
                         std::vector<Vertex>& out) {
   out.clear();
-  const std::size_t n = in.size();
-  int sp = sideOf(hA, hB, in[0].p);
-  for (std::size_t i = 0; i < n; ++i) {
-    const Vertex& p = in[i];
-    const int sq = i + 1 < n ? sideOf(hA, hB, in[i + 1].p) : orientInGrid(hA, hB, end);
-    if (sp >= 0) {
-      out.push_back(p);
-      if (sq < 0) {
-        if (sp == 0) {
-          out.back().lineA = hA;
-          out.back().lineB = hB;
-        } else {
-          out.push_back({crossing(p, hA, hB), hA, hB});
-        }
-      }
-    } else if (sq > 0) {
-      out.push_back({crossing(p, hA, hB), p.lineA, p.lineB});
-    }
-    sp = sq;
-  }
+  clipEdges(in, orientInGrid(hA, hB, end), hA, hB, out);
 }
 
 // The edge from v to w on v's supporting segment, unless it has length 0.
