@@ -26,8 +26,7 @@ PolygonSet intersectConvexRing(const SnappedOperand& other, const SnappedOperand
   BooleanSpec spec;
   spec.subjectRule = other.rule;
   spec.maxCrossings = limits.maxCrossings;
-  preclipConvex(other.rings, convex.rings[0], convex.convex, ws, ws.clipped);
-  ws.edges.clear();
+  preclipConvex(other.rings, convex.rings[0], convex.convex, ws, ws.edges, ws.clipped);
   return resolve(ws.edges, ws.clipped, spec, grid, ws);
 }
 
@@ -47,11 +46,12 @@ PolygonSet resolveGeneral(Rings& subject, const Rings* clip, const BooleanSpec& 
 
 }  // namespace
 
-SnappedOperand snapOperand(const Paths& paths, int operand, FillRule rule, const Grid& grid) {
+SnappedOperand snapOperand(const Paths& paths, int operand, FillRule rule, const Grid& grid,
+                           bool findConvex) {
   SnappedOperand out;
   out.rings = snapRings(paths, operand, grid);
   out.rule = rule;
-  out.convex = out.rings.size() == 1 ? convexOrientation(out.rings[0]) : 0;
+  out.convex = findConvex && out.rings.size() == 1 ? convexOrientation(out.rings[0]) : 0;
   return out;
 }
 
@@ -98,7 +98,8 @@ PolygonSet clip(ClipOp op, const Paths& subject, const Paths& clipPaths, FillRul
   detail::SnappedOperand s, c;
   if (op == ClipOp::Intersection) {
     c = detail::snapOperand(clipPaths, 1, clipRule, grid);
-    s = detail::snapOperand(subject, 0, subjectRule, grid);
+    // With a convex clip the fast path never asks whether the subject is convex.
+    s = detail::snapOperand(subject, 0, subjectRule, grid, c.convex == 0);
   } else {
     s = detail::snapOperand(subject, 0, subjectRule, grid);
     c = detail::snapOperand(clipPaths, 1, clipRule, grid);

@@ -11,7 +11,21 @@
 // crossing of two integer segments and every new edge lies on an integer segment (a subject
 // edge or a side of C), so the sweep handles the result exactly. Cost: O(n * c) for n subject
 // edges and c sides of C; the sweep then only sees what lies inside C.
+//
+// Only what leaves C is clipped. One pass decides for every vertex whether it lies in C (the
+// closed ring, exact int64 orientation: orientInGrid()); an edge with both ends in C lies in C
+// (C is convex) and passes every half-plane step unchanged, so it is emitted as it is, an
+// InputEdge. The ring splits at its vertices in C into open chains v0 .. vm whose inner vertices
+// lie outside C. Each Sutherland-Hodgman step is local: what it emits for an edge p -> q depends
+// only on the sides of p and q and on p's supporting segment, and a vertex inside the half-plane
+// is emitted as it is. So v0 and vm, inside every half-plane, survive every step unchanged and
+// still delimit what the step made of the chain between them (by induction over the steps):
+// clipping the closed ring is clipping each chain on its own (its last vertex vm not emitted,
+// it starts the next chain) and putting the pieces together in ring order. Only a ring with no
+// vertex in C is clipped whole (clipHalfPlane()), as is the reference preclipConvexReference().
 #include <algorithm>
+#include <array>
+#include <cstdint>
 
 #include <roiclip/error.hpp>
 
@@ -31,18 +45,22 @@ XPoint crossing(const Vertex& from, IPoint hA, IPoint hB) {
   return x;
 }
 
-// One Sutherland-Hodgman step: keep the part of the closed path on the left of hA -> hB
-// (points on the line count as inside). Writes into `out` (cleared first).
-void clipHalfPlane(const std::vector<Vertex>& in, IPoint hA, IPoint hB, std::vector<Vertex>& out) {
-  out.clear();
+// orient() of a path vertex: grid points in int64.
+inline int sideOf(IPoint hA, IPoint hB, const XPoint& p) {
+  return p.w == 1 ? orientInGrid(hA, hB, IPoint{std::int64_t(p.x), std::int64_t(p.y)})
+                  : orient(hA, hB, p);
+}
+
+// One Sutherland-Hodgman step over the edges in[i] -> in[i + 1] and in[n - 1] -> a vertex on
+// side `endSide` of hA -> hB: keep the part on the left (points on the line count as inside),
+// appended to `out`.
+void clipEdges(const std::vector<Vertex>& in, int endSide, IPoint hA, IPoint hB,
+               std::vector<Vertex>& out) {
   const std::size_t n = in.size();
-  if (n == 0) return;
-  out.reserve(n + 16);  // usually a few crossings more than the input (no growth by doubling)
-  const int firstSide = orient(hA, hB, in[0].p);
-  int sp = firstSide;
+  int sp = sideOf(hA, hB, in[0].p);
   for (std::size_t i = 0; i < n; ++i) {
     const Vertex& p = in[i];
-    const int sq = i + 1 < n ? orient(hA, hB, in[i + 1].p) : firstSide;
+    const int sq = i + 1 < n ? sideOf(hA, hB, in[i + 1].p) : endSide;
     if (sp >= 0) {
       out.push_back(p);
       if (sq < 0) {
@@ -58,6 +76,228 @@ void clipHalfPlane(const std::vector<Vertex>& in, IPoint hA, IPoint hB, std::vec
     }
     sp = sq;
   }
+}
+
+// One step on a closed path (its last edge back to in[0]). Writes into `out` (cleared first).
+void clipHalfPlane(const std::vector<Vertex>& in, IPoint hA, IPoint hB, std::vector<Vertex>& out) {
+  out.clear();
+  if (in.empty()) return;
+  out.reserve(in.size() +
+              16);  // usually a few crossings more than the input (no growth by doubling)
+  clipEdges(in, sideOf(hA, hB, in[0].p), hA, hB, out);
+}
+
+// One step on an open chain in[0] .. in[n-1], `end` (both in C, so inside the half-plane): what
+// clipHalfPlane() emits for these edges of a closed path, `end` not emitted (it starts the next
+// chain). in[0] always comes out first.
+void clipChainHalfPlane(const std::vector<Vertex>& in, IPoint end, IPoint hA, IPoint hB,
+                        std::vector<Vertex>& out) {
+  out.clear();
+  clipEdges(in, orientInGrid(hA, hB, end), hA, hB, out);
+}
+
+// The edge from v to w on v's supporting segment, unless it has length 0.
+void emitExact(const Vertex& v, const XPoint& w, std::vector<ExactEdge>& out) {
+  const int c = compare(v.p, w);
+  if (c == 0) return;
+  ExactEdge e;
+  e.lineA = v.lineA < v.lineB ? v.lineA : v.lineB;
+  e.lineB = v.lineA < v.lineB ? v.lineB : v.lineA;
+  e.left = c < 0 ? v.p : w;
+  e.right = c < 0 ? w : v.p;
+  e.direction = c < 0 ? +1 : -1;
+  e.operand = 0;
+  out.push_back(e);
+}
+
+// The edges of a clipped closed path.
+void emitClosed(const std::vector<Vertex>& path, std::vector<ExactEdge>& out) {
+  for (std::size_t i = 0; i < path.size(); ++i)
+    emitExact(path[i], path[(i + 1) % path.size()].p, out);
+}
+
+void emitInput(IPoint s, IPoint t, std::vector<InputEdge>& out) {
+  if (s < t) {
+    out.push_back({s, t, +1, 0});
+  } else {
+    out.push_back({t, s, -1, 0});
+  }
+}
+
+// The convex ring with its inside on the left.
+std::vector<IPoint> leftTurning(const std::vector<IPoint>& convexRing, int orientation) {
+  if (orientation == 0) throw InternalError("preclipConvex: clip ring is not convex");
+  std::vector<IPoint> clipRing = convexRing;
+  if (orientation < 0) std::reverse(clipRing.begin(), clipRing.end());
+  return clipRing;
+}
+
+// A ring clipped whole: every half-plane step on the closed path (the reference, and rings with
+// no vertex in C).
+void clipRingWhole(const std::vector<IPoint>& ring, const std::vector<IPoint>& clipRing,
+                   std::vector<Vertex>& path, std::vector<Vertex>& next,
+                   std::vector<ExactEdge>& out) {
+  path.clear();
+  path.reserve(ring.size());
+  for (std::size_t i = 0; i < ring.size(); ++i) {
+    const IPoint a = ring[i], b = ring[(i + 1) % ring.size()];
+    path.push_back({XPoint(a), a, b});
+  }
+  const std::size_t sides = clipRing.size();
+  for (std::size_t k = 0; k < sides && !path.empty(); ++k) {
+    clipHalfPlane(path, clipRing[k], clipRing[(k + 1) % sides], next);
+    path.swap(next);
+  }
+  emitClosed(path, out);
+}
+
+// Whether the rings go through RingClipper: the outcodes are one bit per side of C.
+constexpr std::size_t kMaxCodedSides = 64;
+
+// Pre-clips one ring at a time: edges in C as InputEdges, chains leaving C clipped to
+// ExactEdges. Every vertex gets an outcode, the sides of C it lies strictly outside of (0: in C).
+class RingClipper {
+ public:
+  // `convexRing` (at most kMaxCodedSides sides) turns by `orientation`; the sides are kept
+  // with the inside on their left.
+  RingClipper(const std::vector<IPoint>& convexRing, int orientation, Workspace& ws,
+              std::vector<InputEdge>& edges, std::vector<ExactEdge>& exact)
+      : convexRing_(convexRing),
+        orientation_(orientation),
+        sideCount_(convexRing.size()),
+        path_(ws.path),
+        next_(ws.next),
+        edges_(edges),
+        exact_(exact) {
+    for (std::size_t k = 0; k < sideCount_; ++k) {
+      const std::size_t j = k + 1 < sideCount_ ? k + 1 : 0;
+      const IPoint a = orientation > 0 ? convexRing[k] : convexRing[sideCount_ - 1 - k];
+      const IPoint b = orientation > 0 ? convexRing[j] : convexRing[sideCount_ - 1 - j];
+      sides_[k] = {a.x, a.y, b.x, b.y, b.x - a.x, b.y - a.y};
+    }
+    allSides_ =
+        sideCount_ == kMaxCodedSides ? ~std::uint64_t{0} : (std::uint64_t{1} << sideCount_) - 1;
+  }
+
+  void clip(const std::vector<IPoint>& ring) {
+    const std::size_t n = ring.size();
+    if (n > kInlineCodes) heapCodes_.resize(n);
+    codes_ = n > kInlineCodes ? heapCodes_.data() : inlineCodes_.data();
+    std::uint64_t strictlyIn = 0;  // the sides some vertex lies strictly inside of
+    for (std::size_t i = 0; i < n; ++i) codes_[i] = outcode(ring[i], strictlyIn);
+    // Entirely outside one half-plane (on its line at most): winds 0 times around every point of
+    // C, dropped.
+    if (strictlyIn != allSides_) return;
+    std::size_t first = 0;  // the first vertex in C
+    while (first < n && codes_[first] != 0) ++first;
+    if (first == n) {
+      clipRingWhole(ring, leftTurning(convexRing_, orientation_), path_, next_, exact_);
+      return;
+    }
+    std::size_t chainStart = first;
+    for (std::size_t i = first + 1; i < n; ++i) {
+      if (codes_[i] != 0) continue;
+      closeChain(ring, chainStart, i);
+      chainStart = i;
+    }
+    closeChain(ring, chainStart, first);  // round the end of the ring
+  }
+
+ private:
+  // No member initialisers: the arrays below are written before they are read, not zeroed
+  // on every call.
+  struct Side {
+    std::int64_t ax, ay, bx, by, dx, dy;
+    [[nodiscard]] IPoint a() const { return {ax, ay}; }
+    [[nodiscard]] IPoint b() const { return {bx, by}; }
+  };
+  static constexpr std::size_t kInlineCodes = 256;  // rings up to this size: no allocation
+
+  // The sides q lies strictly outside of; adds those it lies strictly inside of to `strictlyIn`.
+  // orientInGrid() with the sides' directions computed once.
+  std::uint64_t outcode(IPoint q, std::uint64_t& strictlyIn) const {
+    std::uint64_t out = 0, in = 0;
+    for (std::size_t k = 0; k < sideCount_; ++k) {
+      const Side& s = sides_[k];
+      const std::int64_t l = s.dx * (q.y - s.ay), r = s.dy * (q.x - s.ax);
+      out |= std::uint64_t(l < r) << k;
+      in |= std::uint64_t(l > r) << k;
+    }
+    strictlyIn |= in;
+    return out;
+  }
+
+  // Appends ring[i] as a chain vertex (its supporting segment set by the next one).
+  void keep(const std::vector<IPoint>& ring, std::size_t i) {
+    path_.push_back({XPoint(ring[i]), ring[i], ring[i]});
+  }
+
+  // The chain ring[start] .. ring[end] (both in C, the vertices between outside it): one edge in
+  // C, or a stretch outside C clipped on its own. A run of vertices strictly outside one common
+  // side is cut to its first and last: the loop that removes (the run closed by the chord
+  // between them) lies in that open half-plane, outside C, so no winding number in C changes.
+  void closeChain(const std::vector<IPoint>& ring, std::size_t start, std::size_t end) {
+    const std::size_t n = ring.size();
+    const auto after = [n](std::size_t i) { return i + 1 < n ? i + 1 : 0; };
+    if (after(start) == end) {
+      emitInput(ring[start], ring[end], edges_);
+      return;
+    }
+    path_.clear();
+    keep(ring, start);
+    std::size_t runFirst = after(start), runLast = runFirst;
+    std::uint64_t common = codes_[runFirst];
+    for (std::size_t i = after(runFirst); i != end; i = after(i)) {
+      if ((common & codes_[i]) != 0) {
+        common &= codes_[i];
+        runLast = i;
+        continue;
+      }
+      keep(ring, runFirst);
+      if (runLast != runFirst) keep(ring, runLast);
+      runFirst = runLast = i;
+      common = codes_[i];
+    }
+    keep(ring, runFirst);
+    if (runLast != runFirst) keep(ring, runLast);
+    const IPoint last = ring[end];
+    for (std::size_t v = 0; v < path_.size(); ++v) {
+      path_[v].lineB = v + 1 < path_.size() ? path_[v + 1].lineA : last;
+    }
+    for (std::size_t k = 0; k < sideCount_; ++k) {
+      clipChainHalfPlane(path_, last, sides_[k].a(), sides_[k].b(), next_);
+      path_.swap(next_);
+    }
+    const XPoint lastPoint(last);
+    for (std::size_t v = 0; v < path_.size(); ++v) {
+      emitExact(path_[v], v + 1 < path_.size() ? path_[v + 1].p : lastPoint, exact_);
+    }
+  }
+
+  const std::vector<IPoint>& convexRing_;
+  int orientation_ = 0;
+  std::size_t sideCount_ = 0;
+  std::array<Side, kMaxCodedSides> sides_;
+  std::uint64_t allSides_ = 0;
+  std::vector<Vertex>& path_;
+  std::vector<Vertex>& next_;
+  std::vector<InputEdge>& edges_;
+  std::vector<ExactEdge>& exact_;
+  std::uint64_t* codes_ = nullptr;  // the outcodes of the ring being clipped
+  std::array<std::uint64_t, kInlineCodes> inlineCodes_;
+  std::vector<std::uint64_t> heapCodes_;
+};
+
+// Whether a ring is dropped: some half-plane has no vertex strictly inside it.
+bool outsideOneSide(const std::vector<IPoint>& ring, const std::vector<IPoint>& clipRing) {
+  for (std::size_t k = 0; k < clipRing.size(); ++k) {
+    const IPoint hA = clipRing[k], hB = clipRing[(k + 1) % clipRing.size()];
+    if (std::none_of(ring.begin(), ring.end(),
+                     [&](IPoint q) { return orientInGrid(hA, hB, q) > 0; })) {
+      return true;
+    }
+  }
+  return false;
 }
 
 }  // namespace
@@ -100,70 +340,53 @@ int convexOrientation(const std::vector<IPoint>& ring) {
 void preclipConvex(const Rings& rings, const std::vector<IPoint>& convexRing,
                    std::vector<ExactEdge>& out) {
   const WorkspaceLease workspace;
-  preclipConvex(rings, convexRing, convexOrientation(convexRing), *workspace, out);
+  std::vector<InputEdge> edges;
+  preclipConvex(rings, convexRing, convexOrientation(convexRing), *workspace, edges, out);
+  for (const InputEdge& e : edges) {
+    ExactEdge x;
+    x.lineA = e.a;
+    x.lineB = e.b;
+    x.left = XPoint(e.a);
+    x.right = XPoint(e.b);
+    x.direction = e.direction;
+    x.operand = e.operand;
+    out.push_back(x);
+  }
 }
 
 void preclipConvex(const Rings& rings, const std::vector<IPoint>& convexRing, int orientation,
-                   Workspace& workspace, std::vector<ExactEdge>& out) {
+                   Workspace& workspace, std::vector<InputEdge>& edges,
+                   std::vector<ExactEdge>& out) {
   if (orientation == 0) throw InternalError("preclipConvex: clip ring is not convex");
-  std::vector<IPoint> clipRing = convexRing;
-  if (orientation < 0) std::reverse(clipRing.begin(), clipRing.end());  // inside on the left
-
   // Reserved up front: at 100k vertices growth by doubling doubled the bytes allocated, and
   // fresh pages cost more than the clipping (kernel page faults).
   std::size_t vertexCount = 0;
   for (const std::vector<IPoint>& ring : rings) vertexCount += ring.size();
+  edges.clear();
+  edges.reserve(vertexCount);
   out.clear();
-  out.reserve(vertexCount + 16);
-  std::vector<Vertex>& path = workspace.path;
-  std::vector<Vertex>& next = workspace.next;
-  const std::size_t sides = clipRing.size();
-  for (const std::vector<IPoint>& ring : rings) {
-    // Rings entirely inside every half-plane pass unchanged; rings entirely outside one of them
-    // wind 0 times around every point of the clip ring and are dropped.
-    bool allInside = true, outsideOne = false;
-    for (std::size_t k = 0; k < sides && !outsideOne; ++k) {
-      const IPoint hA = clipRing[k], hB = clipRing[(k + 1) % sides];
-      bool anyIn = false;
-      for (const IPoint& q : ring) {
-        const int o = orient(hA, hB, q);
-        if (o <= 0) allInside = false;
-        if (o > 0) anyIn = true;
-        if (!allInside && anyIn) break;
+  if (convexRing.size() <= kMaxCodedSides) {
+    RingClipper clipper(convexRing, orientation, workspace, edges, out);
+    for (const std::vector<IPoint>& ring : rings) clipper.clip(ring);
+  } else {  // a convex ring of many sides: every ring clipped whole
+    const std::vector<IPoint> clipRing = leftTurning(convexRing, orientation);
+    for (const std::vector<IPoint>& ring : rings) {
+      if (!outsideOneSide(ring, clipRing)) {
+        clipRingWhole(ring, clipRing, workspace.path, workspace.next, out);
       }
-      if (!anyIn) outsideOne = true;
-    }
-    if (outsideOne) continue;
-    path.clear();
-    path.reserve(ring.size());
-    for (std::size_t i = 0; i < ring.size(); ++i) {
-      const IPoint a = ring[i], b = ring[(i + 1) % ring.size()];
-      path.push_back({XPoint(a), a, b});
-    }
-    if (!allInside) {
-      for (std::size_t k = 0; k < sides && !path.empty(); ++k) {
-        clipHalfPlane(path, clipRing[k], clipRing[(k + 1) % sides], next);
-        path.swap(next);
-      }
-    }
-    for (std::size_t i = 0; i < path.size(); ++i) {
-      const Vertex& v = path[i];
-      const XPoint& w = path[(i + 1) % path.size()].p;
-      const int c = compare(v.p, w);
-      if (c == 0) continue;
-      ExactEdge e;
-      e.lineA = v.lineA < v.lineB ? v.lineA : v.lineB;
-      e.lineB = v.lineA < v.lineB ? v.lineB : v.lineA;
-      e.left = c < 0 ? v.p : w;
-      e.right = c < 0 ? w : v.p;
-      e.direction = c < 0 ? +1 : -1;
-      e.operand = 0;
-      out.push_back(e);
     }
   }
-  // Not kept through the sweep that follows: at 1M vertices these two are 190 MB of the peak.
-  recycle(path);
-  recycle(next);
+  // Not kept through the sweep that follows (a chain can be as long as the ring).
+  recycle(workspace.path);
+  recycle(workspace.next);
+}
+
+void preclipConvexReference(const Rings& rings, const std::vector<IPoint>& convexRing,
+                            std::vector<ExactEdge>& out) {
+  const std::vector<IPoint> clipRing = leftTurning(convexRing, convexOrientation(convexRing));
+  out.clear();
+  std::vector<Vertex> path, next;
+  for (const std::vector<IPoint>& ring : rings) clipRingWhole(ring, clipRing, path, next, out);
 }
 
 }  // namespace roiclip::detail

@@ -34,22 +34,25 @@ inline std::int64_t snap(double v, const Grid& grid, double originCoordinate, Ax
   return *units;
 }
 
-// True when b lies on the way from a to c, going straight on (exact).
-bool straightThrough(IPoint a, IPoint b, IPoint c) {
-  if (orient(a, b, c) != 0) return false;
-  return i128(b.x - a.x) * (c.x - b.x) + i128(b.y - a.y) * (c.y - b.y) > 0;
+// True when b lies on the way from a to c, going straight on (exact). Snapped points lie within
+// +-2^30 units (orientInGrid()): each product of differences is at most 2^62 in magnitude, so the
+// dot product's sign is decided by comparing its two terms in int64.
+inline bool straightThrough(IPoint a, IPoint b, IPoint c) {
+  if (orientInGrid(a, b, c) != 0) return false;
+  return (b.x - a.x) * (c.x - b.x) > -((b.y - a.y) * (c.y - b.y));
 }
 
-// Drops vertices where a closed ring goes straight on: pixel chains become a few long edges.
-// The covered region and every winding number are unchanged.
-void mergeStraightRuns(std::vector<IPoint>& ring) {
-  std::size_t kept = 0;
-  for (const IPoint q : ring) {
-    while (kept >= 2 && straightThrough(ring[kept - 2], ring[kept - 1], q)) --kept;
-    ring[kept++] = q;
+// Drops vertices where a path goes straight on: the loop adds q to the kept points `ring`.
+inline void appendMerging(std::vector<IPoint>& ring, IPoint q) {
+  while (ring.size() >= 2 && straightThrough(ring[ring.size() - 2], ring.back(), q)) {
+    ring.pop_back();
   }
-  ring.resize(kept);
-  // Across the closing vertex.
+  ring.push_back(q);
+}
+
+// The straight-on vertices across the closing vertex of a ring whose other straight runs are
+// merged (appendMerging()).
+void mergeAcrossClose(std::vector<IPoint>& ring) {
   std::size_t begin = 0;
   bool changed = true;
   while (changed && ring.size() - begin >= 3) {
@@ -66,16 +69,100 @@ void mergeStraightRuns(std::vector<IPoint>& ring) {
   ring.erase(ring.begin(), ring.begin() + std::ptrdiff_t(begin));
 }
 
-// Snap one path: validated grid points with consecutive repeats removed.
+// Drops vertices where a closed ring goes straight on: pixel chains become a few long edges.
+// The covered region and every winding number are unchanged.
+void mergeStraightRuns(std::vector<IPoint>& ring) {
+  std::size_t kept = 0;
+  for (const IPoint q : ring) {
+    while (kept >= 2 && straightThrough(ring[kept - 2], ring[kept - 1], q)) --kept;
+    ring[kept++] = q;
+  }
+  ring.resize(kept);
+  mergeAcrossClose(ring);
+}
+
+// Grid::toUnits() inline for both coordinates of a point at once (the same operations: round
+// v * scale to an integer, subtract origin * scale, test the range). False for a point it cannot
+// take (a coordinate out of range, not finite, or too large for the short rounding): snap()
+// decides those, giving the same units or throwing naming the path, vertex and axis.
+struct FastSnap {
+  double s, ox, oy;
+  explicit FastSnap(const Grid& grid)
+      : s(grid.scale), ox(grid.origin.x * grid.scale), oy(grid.origin.y * grid.scale) {}
+  bool operator()(const Point& v, IPoint& q) const {
+    constexpr double kRound = 6755399441055744.0;  // 1.5 * 2^52, as detail::roundToUnits
+    constexpr double kMax = double(Grid::kMaxUnits);
+    const double ux = v.x * s, uy = v.y * s;
+    const double dx = ((ux + kRound) - kRound) - ox, dy = ((uy + kRound) - kRound) - oy;
+    if (!(std::fabs(ux) < 0x1p51 && std::fabs(uy) < 0x1p51 && std::fabs(dx) <= kMax &&
+          std::fabs(dy) <= kMax)) {
+      return false;
+    }
+    q = {std::int64_t(dx), std::int64_t(dy)};
+    return true;
+  }
+};
+
+// Snap one path: validated grid points with consecutive repeats removed; with `merge`, also
+// the vertices where it goes straight on (appendMerging()).
+template <bool kMerge>
+void snapPoints(const Path& path, std::size_t count, std::size_t pathIndex, Operand label,
+                const Grid& grid, std::vector<IPoint>& out) {
+  const FastSnap fast(grid);
+  out.clear();
+  out.reserve(count);
+  IPoint last{std::int64_t{1} << 62, 0};  // no snapped point
+  for (std::size_t i = 0; i < count; ++i) {
+    IPoint q;
+    if (!fast(path[i], q)) {
+      q = {snap(path[i].x, grid, grid.origin.x, Axis::X, pathIndex, i, label),
+           snap(path[i].y, grid, grid.origin.y, Axis::Y, pathIndex, i, label)};
+    }
+    if (q == last) continue;
+    last = q;
+    if (kMerge) {
+      appendMerging(out, q);
+    } else {
+      out.push_back(q);
+    }
+  }
+}
+
 void snapPath(const Path& path, std::size_t pathIndex, Operand label, const Grid& grid,
               std::vector<IPoint>& out) {
-  out.clear();
-  out.reserve(path.size());
-  for (std::size_t i = 0; i < path.size(); ++i) {
-    const IPoint q{snap(path[i].x, grid, grid.origin.x, Axis::X, pathIndex, i, label),
-                   snap(path[i].y, grid, grid.origin.y, Axis::Y, pathIndex, i, label)};
-    if (out.empty() || out.back() != q) out.push_back(q);
+  snapPoints<false>(path, path.size(), pathIndex, label, grid, out);
+}
+
+// The points of a closed path that count, when the fast snapping decides it: the trailing
+// points on the first point's grid point close the ring and are left out (the first one is
+// kept). nullopt when a point that decides it needs snap().
+std::optional<std::size_t> ringEnd(const Path& path, const FastSnap& fast) {
+  IPoint first, q;
+  if (path.empty()) return 0;
+  if (!fast(path[0], first)) return std::nullopt;
+  std::size_t end = path.size();
+  for (; end > 1; --end) {
+    if (!fast(path[end - 1], q)) return std::nullopt;
+    if (q != first) break;
   }
+  return end;
+}
+
+// One closed path as a ring: snapped, repeats and the closing repeats of the first point
+// removed, straight runs merged. In one pass over the points when the fast snapping decides
+// where the ring closes; the result is the same as snapping, popping the closing repeats and
+// merging (mergeStraightRuns()) one after the other: the merge only reads the deduplicated
+// points in order, and leaving out the closing repeats before it is what popping them does.
+void snapRing(const Path& path, std::size_t pathIndex, Operand label, const Grid& grid,
+              std::vector<IPoint>& ring) {
+  if (const std::optional<std::size_t> end = ringEnd(path, FastSnap(grid))) {
+    snapPoints<true>(path, *end, pathIndex, label, grid, ring);
+    mergeAcrossClose(ring);
+    return;
+  }
+  snapPath(path, pathIndex, label, grid, ring);
+  while (ring.size() > 1 && ring.back() == ring.front()) ring.pop_back();
+  mergeStraightRuns(ring);
 }
 
 // The stages take the grid resolveGrid() chose for the call.
@@ -91,9 +178,7 @@ std::vector<std::vector<IPoint>> snapRings(const Paths& paths, int operand, cons
   rings.reserve(paths.size());
   std::vector<IPoint> ring;
   for (std::size_t p = 0; p < paths.size(); ++p) {
-    snapPath(paths[p], p, operand == 0 ? Operand::Subject : Operand::Clip, grid, ring);
-    while (ring.size() > 1 && ring.back() == ring.front()) ring.pop_back();
-    mergeStraightRuns(ring);
+    snapRing(paths[p], p, operand == 0 ? Operand::Subject : Operand::Clip, grid, ring);
     if (ring.size() >= 2) rings.push_back(std::move(ring));  // a point encloses nothing
   }
   return rings;

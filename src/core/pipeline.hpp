@@ -46,6 +46,17 @@ struct ExactEdge {
 void appendInputEdges(const Paths& paths, int operand, const Grid& grid,
                       std::vector<InputEdge>& out);
 
+/// orient() for grid points within the grid's range, |x|, |y| <= Grid::kMaxUnits = 2^30 units
+/// of the origin (every snapped point): the differences are at most 2^31 and each product at
+/// most 2^62 in magnitude, so both products fit int64 and comparing them (no subtraction, which
+/// could reach 2^63) gives the exact sign.
+inline int orientInGrid(IPoint a, IPoint b, IPoint c) {
+  static_assert(Grid::kMaxUnits <= (std::int64_t{1} << 30), "the bound above assumes 2^30");
+  const std::int64_t l = (b.x - a.x) * (c.y - a.y);
+  const std::int64_t r = (b.y - a.y) * (c.x - a.x);
+  return (l > r) - (l < r);
+}
+
 /// Closed rings of grid points, as snapRings() makes them.
 using Rings = std::vector<std::vector<IPoint>>;
 
@@ -222,14 +233,21 @@ int convexOrientation(const std::vector<IPoint>& ring);
 
 /// Convex pre-clip (convex_clip.cpp): Sutherland-Hodgman against each half-plane of a convex
 /// ring, exactly. Inside the ring, every winding number of `rings` is preserved; outside it,
-/// every winding number becomes 0. Output edges lie on integer input or clip segments; `out` is
-/// cleared first.
+/// every winding number becomes 0. Output edges lie on integer input or clip segments: the
+/// input edges lying in the convex ring as they are in `edges`, the clipped ones in `out` (both
+/// cleared first). Every point of `rings` and `convexRing` lies within the grid's range
+/// (orientInGrid()), as snapRings() makes them.
 /// `orientation` is convexOrientation(convexRing), computed once by the caller.
 void preclipConvex(const Rings& rings, const std::vector<IPoint>& convexRing, int orientation,
-                   Workspace& workspace, std::vector<ExactEdge>& out);
-/// The same on the calling thread's workspace, computing the orientation.
+                   Workspace& workspace, std::vector<InputEdge>& edges,
+                   std::vector<ExactEdge>& out);
+/// The same on the calling thread's workspace, computing the orientation, every edge in `out`.
 void preclipConvex(const Rings& rings, const std::vector<IPoint>& convexRing,
                    std::vector<ExactEdge>& out);
+/// The plain pre-clip, every ring through every half-plane step whole (the tests' reference):
+/// the same winding numbers as preclipConvex().
+void preclipConvexReference(const Rings& rings, const std::vector<IPoint>& convexRing,
+                            std::vector<ExactEdge>& out);
 
 /// Stage 4 (nesting.cpp): give each hole its outer ring and each outer ring the hole it lies
 /// in, and emit the polygons in image coordinates with roiclip's output orientation, every
@@ -321,7 +339,9 @@ struct SnappedOperand {
   FillRule rule = FillRule::EvenOdd;
   int convex = 0;
 };
-SnappedOperand snapOperand(const Paths& paths, int operand, FillRule rule, const Grid& grid);
+/// `findConvex` false leaves `convex` 0 (a caller that will not take the convex path for it).
+SnappedOperand snapOperand(const Paths& paths, int operand, FillRule rule, const Grid& grid,
+                           bool findConvex = true);
 
 /// clip() on snapped operands (boolean_op.cpp): the convex fast path for an intersection with a
 /// convex operand, else the general path. On the general path the subject's rings are freed

@@ -6,12 +6,14 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 
 #include <roiclip/roiclip.hpp>
 
 #include "pipeline.hpp"
 #include "stage_support.hpp"
 #include "support/oracle.hpp"
+#include "workspace.hpp"
 
 namespace roiclip {
 namespace {
@@ -144,6 +146,115 @@ TEST(ConvexPath, SameRegionAsGeneralPath) {
   }
   EXPECT_GT(convexClips, 250);
   EXPECT_GT(nonEmpty, compared / 4);
+}
+
+// The pre-clip (edges in the quad passed as they are, only chains leaving it clipped) against
+// the plain Sutherland-Hodgman reference on whole rings: the same region under every fill rule,
+// and the region the subject's winding numbers give inside the quad at sampled points.
+Paths toPaths(const detail::Rings& rings) {
+  Paths paths;
+  for (const auto& r : rings) {
+    Path p;
+    for (const IPoint q : r) p.emplace_back(double(q.x), double(q.y));
+    paths.push_back(p);
+  }
+  return paths;
+}
+
+PolygonSet resolveBoth(const std::vector<detail::InputEdge>& edges,
+                       const std::vector<detail::ExactEdge>& exact, FillRule rule) {
+  const detail::Arrangement a = detail::splitEdges(edges, exact, stages::simplifyWith(rule));
+  return detail::buildNesting(a, detail::traceContours(a), stages::kUnitGrid);
+}
+
+// A random ring of `n` vertices on a few lattice lines through the quad's corners and sides, so
+// vertices fall on its sides, edges run along them and through its corners.
+std::vector<IPoint> snappedRing(std::mt19937& rng, int n, int lo, int hi) {
+  std::uniform_int_distribution<int> pick(0, 5), coord(lo, hi);
+  const int special[] = {4, 16, 10, 4, 16, 10};  // the quad's sides x = 4, x = 16 ...
+  std::vector<IPoint> r;
+  for (int i = 0; i < n; ++i) {
+    const int x = pick(rng) < 2 ? special[pick(rng)] : coord(rng);
+    const int y = pick(rng) < 2 ? special[pick(rng)] : coord(rng);
+    r.push_back({x, y});
+  }
+  return r;
+}
+
+void expectSameAsReference(const detail::Rings& rings, const std::vector<IPoint>& convex,
+                           std::uint32_t seed) {
+  SCOPED_TRACE(testing::describe(toPaths(rings)));
+  detail::Rings snapped;  // as snapRings() makes them (repeats and straight runs removed)
+  for (const Path& p : toPaths(rings)) {
+    auto r = detail::snapRings({p}, 0, stages::kUnitGrid);
+    if (!r.empty()) snapped.push_back(r[0]);
+  }
+  std::vector<detail::ExactEdge> reference, exact;
+  std::vector<detail::InputEdge> edges;
+  detail::preclipConvexReference(snapped, convex, reference);
+  detail::Workspace ws;
+  detail::preclipConvex(snapped, convex, detail::convexOrientation(convex), ws, edges, exact);
+  const Paths subject = toPaths(snapped), clipPaths = toPaths({convex});
+  for (FillRule rule :
+       {FillRule::EvenOdd, FillRule::NonZero, FillRule::Positive, FillRule::Negative}) {
+    const PolygonSet fast = resolveBoth(edges, exact, rule);
+    const PolygonSet slow = resolveBoth({}, reference, rule);
+    ASSERT_NEAR(fast.area(), slow.area(), 1e-9) << toString(rule);
+    EXPECT_EQ(fast.ringCount(), slow.ringCount()) << toString(rule);
+    const auto report = testing::sampleRegion(
+        fast, {&subject, &clipPaths},
+        [&](const std::vector<long long>& w) { return isFilled(rule, w[0]) && w[1] != 0; }, 0, 22,
+        80, seed);
+    ASSERT_EQ(report.mismatches, 0) << toString(rule) << " " << report.firstMismatch;
+  }
+}
+
+const std::vector<IPoint> kQuad = {{4, 4}, {16, 6}, {14, 16}, {5, 12}};
+const std::vector<IPoint> kSquare = {{4, 4}, {16, 4}, {16, 16}, {4, 16}};
+
+TEST(ConvexPreclip, SameAsWholeRingReference) {
+  // Hand-picked: inside, outside, around the quad, touching its corners, along its sides, on
+  // its sides' lines only, crossing a side many times.
+  const detail::Rings cases[] = {
+      {{{6, 6}, {12, 6}, {12, 12}, {6, 12}}},
+      {{{20, 0}, {30, 0}, {30, 10}}},
+      {{{0, 0}, {20, 0}, {20, 20}, {0, 20}}},
+      {{{4, 4}, {16, 4}, {16, 16}, {4, 16}}},
+      {{{4, 4}, {0, 0}, {4, 0}}, {{16, 16}, {20, 16}, {20, 20}}},
+      {{{4, 4}, {10, 4}, {10, 0}}},
+      {{{0, 4}, {20, 4}, {20, 2}, {0, 2}}},
+      {{{4, 8}, {10, 8}, {10, 20}, {4, 20}}},
+      {{{8, 8}, {20, 8}, {8, 9}}},
+      {{{2, 2}, {18, 2}, {18, 18}, {2, 18}}, {{6, 6}, {6, 10}, {10, 10}, {10, 6}}},
+  };
+  std::uint32_t seed = 1;
+  for (const auto& c : cases) {
+    expectSameAsReference(c, kSquare, seed++);
+    expectSameAsReference(c, kQuad, seed++);
+    std::vector<IPoint> cw(kQuad.rbegin(), kQuad.rend());
+    expectSameAsReference(c, cw, seed++);
+  }
+  // A zigzag crossing the square's bottom side 40 times, in and out of the ring.
+  std::vector<IPoint> zigzag;
+  for (int i = 0; i <= 20; ++i) zigzag.push_back({i, i % 2 == 0 ? 2 : 6});
+  zigzag.push_back({20, 10});
+  zigzag.push_back({0, 10});
+  expectSameAsReference({zigzag}, kSquare, 100);
+  expectSameAsReference({zigzag}, kQuad, 101);
+}
+
+TEST(ConvexPreclip, RandomRingsSameAsWholeRingReference) {
+  std::mt19937 rng(4242);
+  for (int iter = 0; iter < 400; ++iter) {
+    detail::Rings rings;
+    const int count = 1 + int(rng() % 3);
+    for (int r = 0; r < count; ++r) {
+      rings.push_back(iter % 4 == 3 ? snappedRing(rng, 3 + int(rng() % 5), 6, 14)
+                                    : snappedRing(rng, 3 + int(rng() % 25), 0, 20));
+    }
+    expectSameAsReference(rings, iter % 2 == 0 ? kQuad : kSquare, std::uint32_t(iter));
+    if (HasFatalFailure()) return;
+  }
 }
 
 }  // namespace

@@ -136,3 +136,89 @@ TEST(Simplify, InvalidInputIsRejectedWithItsLocation) {
 
 }  // namespace
 }  // namespace roiclip
+
+namespace roiclip {
+namespace {
+
+// The inline snapping takes a point only when Grid::toUnits() would; every other point goes
+// through the checked path, so each error still names its path, vertex and axis.
+TEST(StageInput, SnappingErrorsNameTheirPathVertexAndAxis) {
+  struct Bad {
+    double x, y;
+    std::size_t path, vertex;
+    Axis axis;
+  };
+  const Grid grid = Grid::fixed(1.0);
+  const double big = double(Grid::kMaxUnits) + 1;  // one unit beyond the range
+  for (const Bad& bad :
+       {Bad{NAN, 0, 2, 3, Axis::X}, Bad{0, NAN, 2, 3, Axis::Y}, Bad{big, 0, 1, 0, Axis::X},
+        Bad{0, -big, 0, 4, Axis::Y}, Bad{INFINITY, NAN, 1, 2, Axis::X},
+        Bad{1e300, 0, 2, 1, Axis::X}, Bad{0, 0x1p52, 0, 1, Axis::Y}}) {
+    Paths paths(3, Path{{0, 0}, {10, 0}, {10, 10}, {0, 10}, {5, 5}});
+    paths[bad.path][bad.vertex] = {bad.x, bad.y};
+    for (int operand = 0; operand < 2; ++operand) {
+      try {
+        detail::snapRings(paths, operand, grid);
+        ADD_FAILURE() << "no error for (" << bad.x << ", " << bad.y << ")";
+      } catch (const InvalidInputError& e) {
+        EXPECT_EQ(e.location().path, bad.path) << e.what();
+        EXPECT_EQ(e.location().vertex, bad.vertex) << e.what();
+        EXPECT_EQ(e.location().axis, bad.axis) << e.what();
+        EXPECT_EQ(e.location().operand, operand == 0 ? Operand::Subject : Operand::Clip);
+      }
+    }
+  }
+  // The range's ends themselves are held, and an origin shifts the range.
+  const double m = double(Grid::kMaxUnits);
+  const auto rings = detail::snapRings({{{-m, -m}, {m, -m}, {m, m}}}, 0, grid);
+  ASSERT_EQ(rings.size(), 1u);
+  EXPECT_EQ(rings[0][2], (IPoint{Grid::kMaxUnits, Grid::kMaxUnits}));
+  EXPECT_THROW(detail::snapRings({{{0, 0}, {m, 0}, {1, 1}}}, 0, Grid::fixed(1.0, {-1, 0})),
+               InvalidInputError);
+  const auto shifted =
+      detail::snapRings({{{0, 0}, {m + 5, 0}, {1, 1}}}, 0, Grid::fixed(1.0, {5, 0}));
+  ASSERT_EQ(shifted.size(), 1u);
+  EXPECT_EQ(shifted[0][1], (IPoint{Grid::kMaxUnits, 0}));
+}
+
+// orientInGrid() (int64) against the 128-bit orient() on every triple of points built from the
+// extreme coordinates of the grid's range, where the products reach 2^62.
+TEST(StageInput, Int64OrientationAgreesAtTheRangesEnds) {
+  const std::int64_t m = Grid::kMaxUnits;
+  const std::int64_t values[] = {-m, -m + 1, -m / 2, -1, 0, 1, m / 2 + 1, m - 1, m};
+  std::vector<IPoint> points;
+  for (std::int64_t x : values) {
+    for (std::int64_t y : values) points.push_back({x, y});
+  }
+  long long checked = 0, zero = 0;
+  for (const IPoint a : points) {
+    for (const IPoint b : points) {
+      for (const IPoint c : points) {
+        const int expected = detail::orient(a, b, c);
+        ASSERT_EQ(detail::orientInGrid(a, b, c), expected)
+            << a.x << "," << a.y << " " << b.x << "," << b.y << " " << c.x << "," << c.y;
+        zero += expected == 0;
+        ++checked;
+      }
+    }
+  }
+  EXPECT_GT(zero, 0);
+  EXPECT_EQ(checked, 81LL * 81 * 81);
+}
+
+// Straight runs are merged with the int64 test at the range's ends too: a ring along the range's
+// border keeps only its corners, and a reversal there is kept.
+TEST(StageInput, MergesStraightRunsAtTheRangesEnds) {
+  const double m = double(Grid::kMaxUnits);
+  const auto rings = detail::snapRings(
+      {{{-m, -m}, {0, -m}, {m, -m}, {m, 0}, {m, m}, {0, m}, {-m, m}, {-m, 0}}}, 0, Grid::fixed(1));
+  ASSERT_EQ(rings.size(), 1u);
+  EXPECT_EQ(rings[0].size(), 4u);
+  const auto spike =
+      detail::snapRings({{{-m, -m}, {m, -m}, {m, m}, {m, -m + 1}, {m, m - 1}}}, 0, Grid::fixed(1));
+  ASSERT_EQ(spike.size(), 1u);
+  EXPECT_EQ(spike[0].size(), 5u);
+}
+
+}  // namespace
+}  // namespace roiclip
