@@ -232,15 +232,17 @@ TEST(BatchMerge, CommandMergesAndRefusesDifferentOptions) {
   const fs::path t = tmp.path();
   twoShards(t);
   runInto(t / "in2", t / "s3", /*minArea=*/50.0);
+  // The exit code main() returns after parsing.
   const auto parse = [](std::vector<std::string> args, std::ostream& out) {
     CLI::App app;
-    roiclip::app::addMergeCommand(app, out);
+    roiclip::app::MergeCommand merge(app, out);
     std::vector<const char*> argv = {"roiclip"};
     for (const auto& a : args) argv.push_back(a.c_str());
     app.parse(static_cast<int>(argv.size()), argv.data());
+    return merge.exitCode();
   };
   std::ostringstream out;
-  parse({"merge", (t / "m").string(), (t / "s1").string(), (t / "s2").string()}, out);
+  EXPECT_EQ(parse({"merge", (t / "m").string(), (t / "s1").string(), (t / "s2").string()}, out), 0);
   EXPECT_NE(out.str().find("roiclip merge: 2 of 2 images from 2 shards: 2 ok"), std::string::npos)
       << out.str();
   EXPECT_TRUE(fs::exists(t / "m" / "report.html"));
