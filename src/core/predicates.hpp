@@ -16,6 +16,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <utility>
 
 #include <boost/multiprecision/cpp_int.hpp>
@@ -39,6 +40,29 @@ struct IPoint {
   }
 };
 
+/// The double nearest to v (ties to even), bit for bit what the compiler's conversion
+/// (__floattidf) gives, inline. Values that fit 64 bits convert directly; otherwise |v| is
+/// shifted right to 63 bits with every dropped bit ORed into the lowest one (sticky), converted
+/// (a 63-bit value has 10 bits below a double's 53, so the sticky bit sits below the rounding
+/// bit and the one rounding of that conversion is the rounding of |v|), and scaled by 2^shift,
+/// which is exact (a power of two, the result below 2^128).
+inline double toDouble(i128 v) {
+  if (v == i128(std::int64_t(v))) return double(std::int64_t(v));
+  using u128 = unsigned __int128;
+  const u128 u = v < 0 ? -u128(v) : u128(v);  // -2^127 too: unsigned negation
+  const auto high = std::uint64_t(u >> 64);
+  // u >= 2^63, so the shift is 1..65.
+  const int bits = high != 0 ? 128 - __builtin_clzll(high) : 64;
+  const int shift = bits - 63;
+  const bool sticky = (u & ((u128(1) << shift) - 1)) != 0;
+  const auto m = std::int64_t(std::uint64_t(u >> shift) | std::uint64_t(sticky));
+  const std::uint64_t scaleBits = std::uint64_t(1023 + shift) << 52;
+  double scale;
+  std::memcpy(&scale, &scaleBits, sizeof scale);
+  const double r = double(m) * scale;
+  return v < 0 ? -r : r;
+}
+
 /// An exact point (X/W, Y/W), W > 0. Grid points have W == 1. The nearest doubles are cached
 /// for the floating-point filters.
 struct XPoint {
@@ -52,8 +76,8 @@ struct XPoint {
       : x(px),
         y(py),
         w(pw),
-        fx(pw == 1 ? double(px) : double(px) / double(pw)),
-        fy(pw == 1 ? double(py) : double(py) / double(pw)) {}
+        fx(pw == 1 ? toDouble(px) : toDouble(px) / toDouble(pw)),
+        fy(pw == 1 ? toDouble(py) : toDouble(py) / toDouble(pw)) {}
   explicit XPoint(IPoint p) : x(p.x), y(p.y), w(1), fx(double(p.x)), fy(double(p.y)) {}
 };
 
@@ -161,7 +185,8 @@ inline void pointAlong(IPoint a, IPoint b, i128 num, i128 den, XPoint& out) {
   // for any representation. Crossings on the grid are stored with W == 1 for the fast paths;
   // the double quotient is within 2^-50 relative of the exact one, so a grid point is always
   // caught, and the exact product check rejects near misses.
-  const double fx = double(x) / double(den), fy = double(y) / double(den);
+  const double fden = toDouble(den);
+  const double fx = toDouble(x) / fden, fy = toDouble(y) / fden;
   const double rx = double(std::int64_t(fx + (fx >= 0 ? 0.5 : -0.5)));
   const double ry = double(std::int64_t(fy + (fy >= 0 ? 0.5 : -0.5)));
   if (std::fabs(fx - rx) < 1e-3 && std::fabs(fy - ry) < 1e-3 && i128(rx) * den == x &&
