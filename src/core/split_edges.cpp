@@ -43,7 +43,7 @@ struct EventAfter {
   bool operator()(const SweepEvent& a, const SweepEvent& b) const {
     const int c = compareCachedInBox(a.fx, b.fx);
     if (c != 0) return c > 0;
-    return a.point != b.point && less(eventPoint(b, *points), eventPoint(a, *points));
+    return a.point != b.point && lessInBox(eventPoint(b, *points), eventPoint(a, *points));
   }
 };
 
@@ -158,7 +158,7 @@ class Sweep {
     bool operator()(const StatusNode& na, const StatusNode& nb) const {
       const SweepPiece& pa = (*pieces)[std::size_t(na.piece)];
       const SweepPiece& pb = (*pieces)[std::size_t(nb.piece)];
-      const int c = compare(pa.left, pb.left);
+      const int c = compareInBox(pa.left, pb.left);
       int o = 0;
       if (c < 0) {
         o = orient(pa.lineA, pa.lineB, pb.left);
@@ -215,7 +215,7 @@ class Sweep {
   [[nodiscard]] XPoint topPoint() const { return eventPoint(queue_.front(), eventPoints_); }
   // The earliest event is at p (which lies within the grid's range, as every sweep point).
   [[nodiscard]] bool topAt(const XPoint& p) const {
-    return compareCachedInBox(top().fx, p.fx) == 0 && equal(topPoint(), p);
+    return compareCachedInBox(top().fx, p.fx) == 0 && equalInBox(topPoint(), p);
   }
 
   bool nextPoint(XPoint& p) const {
@@ -228,7 +228,7 @@ class Sweep {
     } else {
       const XPoint a(frame_.point(starts_[cursor_].key));
       const XPoint t = topPoint();
-      p = less(t, a) ? t : a;
+      p = lessInBox(t, a) ? t : a;
     }
     return true;
   }
@@ -272,7 +272,7 @@ class Sweep {
       const SweepStart& ev = starts_[cursor_];
       if (!ev.end) {
         starting_.push_back(ev.piece);
-      } else if (pieces_[ev.piece].node >= 0 && equal(pieces_[ev.piece].right, p)) {
+      } else if (pieces_[ev.piece].node >= 0 && equalInBox(pieces_[ev.piece].right, p)) {
         locator = ev.piece;
       }
       ++cursor_;
@@ -325,7 +325,7 @@ class Sweep {
       a.node = -1;
       if (a.slot >= 0) out_.pieces[a.slot].right = vertexHere(p);
       if (a.open) out_.openPieces.push_back({i, a.left, p, a.place});
-      if (!equal(a.right, p)) {
+      if (!equalInBox(a.right, p)) {
         a.left = p;
         starting_.push_back(i);
       }
@@ -366,8 +366,8 @@ class Sweep {
         kept.left = vertexHere(p);
         kept.lineA = a.lineA;
         kept.lineB = a.lineB;
-        kept.contribution = a.contribution;
-        kept.windBelow = wind;
+        kept.contribution = compact(a.contribution);
+        kept.windBelow = compact(wind);
         kept.below = resultBelow;
         out_.pieces.push_back(kept);
         out_.sides.push_back(side);
@@ -410,7 +410,7 @@ class Sweep {
       const int s = crossSign(pieces_[a].direction(), pieces_[b].direction());
       if (s != 0) return s > 0;
       if (pieces_[a].open != pieces_[b].open) return pieces_[b].open;
-      const int c = compare(pieces_[a].right, pieces_[b].right);
+      const int c = compareInBox(pieces_[a].right, pieces_[b].right);
       return c != 0 ? c < 0 : a < b;
     };
     const auto cancels = [this](int i) {
@@ -439,7 +439,7 @@ class Sweep {
              crossSign(pieces_[first].direction(), pieces_[starting_[j]].direction()) == 0) {
         SweepPiece& other = pieces_[starting_[j]];
         for (int k = 0; k < kOperands; ++k) pieces_[first].contribution[k] += other.contribution[k];
-        if (!equal(other.right, pieces_[first].right)) {
+        if (!equalInBox(other.right, pieces_[first].right)) {
           other.left = pieces_[first].right;
           push(other.left, starting_[j]);
         }
@@ -478,12 +478,12 @@ class Sweep {
     // fail it.
     if (testedBefore(pa, b)) return;
     // Two pieces leaving the same point (right after their crossing) cannot cross again.
-    if (equal(pa.left, pb.left)) return;
+    if (equalInBox(pa.left, pb.left)) return;
     XPoint x;
     if (!segmentCrossing(pa.lineA, pa.lineB, pb.lineA, pb.lineB, x)) return;
-    if (compare(x, p) <= 0) return;
-    const int ca = compare(x, pa.right);
-    const int cb = compare(x, pb.right);
+    if (compareInBox(x, p) <= 0) return;
+    const int ca = compareInBox(x, pa.right);
+    const int cb = compareInBox(x, pb.right);
     if (ca > 0 || cb > 0) return;
     if (ca == 0 || cb == 0) return;  // already an event: the end of one of them
     queueCrossing(x, a, b);
