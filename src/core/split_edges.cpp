@@ -161,9 +161,9 @@ class Sweep {
       const int c = compareInBox(pa.left, pb.left);
       int o = 0;
       if (c < 0) {
-        o = orient(pa.lineA, pa.lineB, pb.left);
+        o = orientInBox(pa.lineA, pa.lineB, pb.left);
       } else if (c > 0) {
-        o = -orient(pb.lineA, pb.lineB, pa.left);
+        o = -orientInBox(pb.lineA, pb.lineB, pa.left);
       }
       if (o != 0) return o > 0;
       const int s = crossSign(pa.direction(), pb.direction());
@@ -177,11 +177,11 @@ class Sweep {
     const std::vector<SweepPiece>* pieces;
     bool operator()(const StatusNode& n, const XPoint& p) const {
       const SweepPiece& a = (*pieces)[std::size_t(n.piece)];
-      return orient(a.lineA, a.lineB, p) > 0;
+      return orientInBox(a.lineA, a.lineB, p) > 0;
     }
     bool operator()(const XPoint& p, const StatusNode& n) const {
       const SweepPiece& a = (*pieces)[std::size_t(n.piece)];
-      return orient(a.lineA, a.lineB, p) < 0;
+      return orientInBox(a.lineA, a.lineB, p) < 0;
     }
   };
   using Status = boost::intrusive::set<
@@ -300,7 +300,7 @@ class Sweep {
     const auto passes = [&](Node it) {
       if (it->piece == known) return true;
       const SweepPiece& a = piece(it);
-      return orient(a.lineA, a.lineB, p) == 0;
+      return orientInBox(a.lineA, a.lineB, p) == 0;
     };
     Node lo, hi;
     if (locator >= 0) {

@@ -30,9 +30,8 @@ std::uint64_t bitsOf(double d) {
 
 void expectSame(i128 v) {
   const double want = reference(v), got = toDouble(v);
-  EXPECT_EQ(bitsOf(want), bitsOf(got))
-      << "high " << std::uint64_t(u128(v) >> 64) << " low " << std::uint64_t(v) << ": want "
-      << want << " got " << got;
+  EXPECT_EQ(bitsOf(want), bitsOf(got)) << "high " << std::uint64_t(u128(v) >> 64) << " low "
+                                       << std::uint64_t(v) << ": want " << want << " got " << got;
 }
 
 void expectBothSigns(u128 u) {
