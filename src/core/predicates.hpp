@@ -16,6 +16,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <utility>
 
 #include <boost/multiprecision/cpp_int.hpp>
@@ -39,6 +40,29 @@ struct IPoint {
   }
 };
 
+/// The double nearest to v (ties to even), bit for bit what the compiler's conversion
+/// (__floattidf) gives, inline. Values that fit 64 bits convert directly; otherwise |v| is
+/// shifted right to 63 bits with every dropped bit ORed into the lowest one (sticky), converted
+/// (a 63-bit value has 10 bits below a double's 53, so the sticky bit sits below the rounding
+/// bit and the one rounding of that conversion is the rounding of |v|), and scaled by 2^shift,
+/// which is exact (a power of two, the result below 2^128).
+inline double toDouble(i128 v) {
+  if (v == i128(std::int64_t(v))) return double(std::int64_t(v));
+  using u128 = unsigned __int128;
+  const u128 u = v < 0 ? -u128(v) : u128(v);  // -2^127 too: unsigned negation
+  const auto high = std::uint64_t(u >> 64);
+  // u >= 2^63, so the shift is 1..65.
+  const int bits = high != 0 ? 128 - __builtin_clzll(high) : 64;
+  const int shift = bits - 63;
+  const bool sticky = (u & ((u128(1) << shift) - 1)) != 0;
+  const auto m = std::int64_t(std::uint64_t(u >> shift) | std::uint64_t(sticky));
+  const std::uint64_t scaleBits = std::uint64_t(1023 + shift) << 52;
+  double scale;
+  std::memcpy(&scale, &scaleBits, sizeof scale);
+  const double r = double(m) * scale;
+  return v < 0 ? -r : r;
+}
+
 /// An exact point (X/W, Y/W), W > 0. Grid points have W == 1. The nearest doubles are cached
 /// for the floating-point filters.
 struct XPoint {
@@ -52,8 +76,8 @@ struct XPoint {
       : x(px),
         y(py),
         w(pw),
-        fx(pw == 1 ? double(px) : double(px) / double(pw)),
-        fy(pw == 1 ? double(py) : double(py) / double(pw)) {}
+        fx(pw == 1 ? toDouble(px) : toDouble(px) / toDouble(pw)),
+        fy(pw == 1 ? toDouble(py) : toDouble(py) / toDouble(pw)) {}
   explicit XPoint(IPoint p) : x(p.x), y(p.y), w(1), fx(double(p.x)), fy(double(p.y)) {}
 };
 
@@ -68,6 +92,20 @@ inline int orient(IPoint a, IPoint b, IPoint c) {
   return signOf(v);
 }
 
+/// The exact part of orient(a, b, c) for an off-grid c.
+[[gnu::noinline]] inline int orientExact(IPoint a, IPoint b, const XPoint& c) {
+  // Exact in 128 bits: |X|, |Y| < 3 * 2^93 and |a * W| <= 2^93, so |ex|, |ey| < 2^95.4, and
+  // with |b - a| <= 2^31 each product stays below 2^126.4. The check guards that reasoning.
+  const i128 ex = c.x - i128(a.x) * c.w;
+  const i128 ey = c.y - i128(a.y) * c.w;
+  i128 l, r;
+  if (__builtin_mul_overflow(i128(b.x - a.x), ey, &l) ||
+      __builtin_mul_overflow(i128(b.y - a.y), ex, &r)) {
+    throw InternalError("orient: coordinate bound violated");
+  }
+  return (l > r) - (l < r);
+}
+
 /// Orientation of an exact point against the line through grid points a, b.
 inline int orient(IPoint a, IPoint b, const XPoint& c) {
   if (c.w == 1) return orient(a, b, IPoint{std::int64_t(c.x), std::int64_t(c.y)});
@@ -80,16 +118,27 @@ inline int orient(IPoint a, IPoint b, const XPoint& c) {
                                 std::fabs(uy) * (std::fabs(c.fx) + std::fabs(double(a.x))) + 1.0);
   if (v > bound) return 1;
   if (v < -bound) return -1;
-  // Exact in 128 bits: |X|, |Y| < 3 * 2^93 and |a * W| <= 2^93, so |ex|, |ey| < 2^95.4, and
-  // with |b - a| <= 2^31 each product stays below 2^126.4. The check guards that reasoning.
-  const i128 ex = c.x - i128(a.x) * c.w;
-  const i128 ey = c.y - i128(a.y) * c.w;
-  i128 l, r;
-  if (__builtin_mul_overflow(i128(b.x - a.x), ey, &l) ||
-      __builtin_mul_overflow(i128(b.y - a.y), ex, &r)) {
-    throw InternalError("orient: coordinate bound violated");
-  }
-  return (l > r) - (l < r);
+  return orientExact(a, b, c);
+}
+
+/// orient() for a, b and c within the grid's range (|coordinates| <= Grid::kMaxUnits = 2^30), as
+/// every point of the sweep is. The filter's bound is static per line: ux, uy (|.| <= 2^31) are
+/// exact; c's cached doubles are within 2^-51 * 2^30 = 2^-21 of c, and subtracting a.x, a.y
+/// (|result| < 2^31.1) rounds by at most 2^-21.9 more, so |cx - exact| < 2^-20. Then each product
+/// is off by |u| 2^-20 from cx, cy and by 2^-53 |u| 2^31.1 < |u| 2^-21.9 from its rounding, and
+/// the difference's rounding adds at most (|ux| + |uy|) 2^-21.9: in all below
+/// (|ux| + |uy|) (2^-20 + 2^-21) < (|ux| + |uy|) 2^-19.4. The bound (|ux| + |uy|) 2^-18 is 2.6
+/// times that (its own rounding, one addition, is 2^-53 of it).
+inline int orientInBox(IPoint a, IPoint b, const XPoint& c) {
+  static_assert(Grid::kMaxUnits <= (std::int64_t{1} << 30), "the bound below assumes 2^30");
+  if (c.w == 1) return orient(a, b, IPoint{std::int64_t(c.x), std::int64_t(c.y)});
+  const double ux = double(b.x - a.x), uy = double(b.y - a.y);
+  const double cx = c.fx - double(a.x), cy = c.fy - double(a.y);
+  const double v = ux * cy - uy * cx;
+  const double bound = (std::fabs(ux) + std::fabs(uy)) * 0x1p-18;
+  if (v > bound) return 1;
+  if (v < -bound) return -1;
+  return orientExact(a, b, c);
 }
 
 /// Exact lexicographic comparison (x first, then y): -1, 0, +1.
@@ -148,6 +197,24 @@ inline int compare(const XPoint& a, const XPoint& b) {
 inline bool equal(const XPoint& a, const XPoint& b) { return compare(a, b) == 0; }
 inline bool less(const XPoint& a, const XPoint& b) { return compare(a, b) < 0; }
 
+/// compare() for points within the grid's range (|coordinates| <= Grid::kMaxUnits = 2^30), as
+/// every point of the sweep is (input points, and crossings of segments between them): the
+/// cached doubles are filtered with compareCachedInBox()'s static bound instead of a relative
+/// one. Exact: the filter answers only beyond its proven bound, the numerators otherwise.
+inline int compareInBox(const XPoint& a, const XPoint& b) {
+  if (a.w == b.w) {
+    if (a.x != b.x) return a.x < b.x ? -1 : 1;
+    return (a.y > b.y) - (a.y < b.y);
+  }
+  int c = compareCachedInBox(a.fx, b.fx);
+  if (c == 0) c = compareCoord(a.x, a.w, b.x, b.w);
+  if (c != 0) return c;
+  c = compareCachedInBox(a.fy, b.fy);
+  return c != 0 ? c : compareCoord(a.y, a.w, b.y, b.w);
+}
+inline bool equalInBox(const XPoint& a, const XPoint& b) { return compareInBox(a, b) == 0; }
+inline bool lessInBox(const XPoint& a, const XPoint& b) { return compareInBox(a, b) < 0; }
+
 /// Sign of d1 x d2 for direction vectors of grid segments: +1 when d2 turns counter-clockwise
 /// from d1.
 inline int crossSign(IPoint d1, IPoint d2) { return signOf(i128(d1.x) * d2.y - i128(d1.y) * d2.x); }
@@ -161,7 +228,8 @@ inline void pointAlong(IPoint a, IPoint b, i128 num, i128 den, XPoint& out) {
   // for any representation. Crossings on the grid are stored with W == 1 for the fast paths;
   // the double quotient is within 2^-50 relative of the exact one, so a grid point is always
   // caught, and the exact product check rejects near misses.
-  const double fx = double(x) / double(den), fy = double(y) / double(den);
+  const double fden = toDouble(den);
+  const double fx = toDouble(x) / fden, fy = toDouble(y) / fden;
   const double rx = double(std::int64_t(fx + (fx >= 0 ? 0.5 : -0.5)));
   const double ry = double(std::int64_t(fy + (fy >= 0 ? 0.5 : -0.5)));
   if (std::fabs(fx - rx) < 1e-3 && std::fabs(fy - ry) < 1e-3 && i128(rx) * den == x &&

@@ -67,12 +67,32 @@ struct SweepPiece {
   }
 };
 
-/// An input edge end on the grid, sorted once before the sweep.
+/// An input edge end on the grid, sorted once before the sweep. The point is stored as a sort
+/// key relative to the sweep's corner (min x, min y of the grid ends): (x - minX) << 32 |
+/// (y - minY). Grid units are at most 2^30 in magnitude (Grid::kMaxUnits), so each difference is
+/// below 2^31 and the key's order is the points' lexicographic order (spreadsort sorts it).
 struct SweepStart {
-  IPoint point;
+  std::uint64_t key;
   int piece;
   bool end;  ///< the right end of `piece` (a hint: the piece may have been merged away)
 };
+static_assert(sizeof(SweepStart) == 16, "80k of these are sorted on W1-100k: keep them small");
+
+/// The corner the sweep's start keys are relative to, and the conversions both ways.
+struct StartFrame {
+  static_assert(Grid::kMaxUnits <= (std::int64_t{1} << 30), "differences must fit 32 bits");
+  std::int64_t minX = 0, minY = 0;
+  [[nodiscard]] std::uint64_t key(IPoint p) const {
+    return std::uint64_t(p.x - minX) << 32 | std::uint64_t(p.y - minY);
+  }
+  [[nodiscard]] IPoint point(std::uint64_t key) const {
+    return {minX + std::int64_t(key >> 32), minY + std::int64_t(key & 0xffffffffU)};
+  }
+};
+
+/// Sort start events by their keys (lexicographic point order); the order of equal keys is
+/// unspecified, as the sweep takes every start at a point together.
+void sortStarts(std::vector<SweepStart>& starts);
 
 /// The exact coordinates of an XPoint without its cached doubles (an event keeps those).
 struct ExactCoords {

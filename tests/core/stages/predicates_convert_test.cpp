@@ -1,0 +1,85 @@
+// SPDX-License-Identifier: MIT
+// toDouble() (src/core/predicates.hpp), the inline i128 -> double conversion, bit for bit against
+// the compiler's conversion on edge values (+-2^127, powers of two and their neighbours, halfway
+// cases with and without a sticky bit) and on random values of every bit length.
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <cstring>
+#include <random>
+#include <vector>
+
+#include "predicates.hpp"
+
+namespace roiclip::detail {
+namespace {
+
+using u128 = unsigned __int128;
+
+std::uint64_t bitsOf(double d) {
+  std::uint64_t b;
+  std::memcpy(&b, &d, sizeof b);
+  return b;
+}
+
+// The compiler's conversion, kept from being folded or replaced.
+[[gnu::noinline]] double reference(i128 v) {
+  volatile i128 copy = v;
+  return static_cast<double>(copy);
+}
+
+void expectSame(i128 v) {
+  const double want = reference(v), got = toDouble(v);
+  EXPECT_EQ(bitsOf(want), bitsOf(got)) << "high " << std::uint64_t(u128(v) >> 64) << " low "
+                                       << std::uint64_t(v) << ": want " << want << " got " << got;
+}
+
+void expectBothSigns(u128 u) {
+  expectSame(i128(u));
+  expectSame(-i128(u));
+}
+
+TEST(ToDouble, ExtremesAndPowersOfTwo) {
+  expectSame(i128(u128(1) << 127));  // -2^127
+  expectSame(i128((u128(1) << 127) - 1));
+  expectSame(-i128((u128(1) << 127) - 1));
+  expectSame(0);
+  for (int k = 0; k < 127; ++k) {
+    const u128 p = u128(1) << k;
+    expectBothSigns(p);
+    expectBothSigns(p - 1);
+    expectBothSigns(p + 1);
+  }
+}
+
+// m * 2^s + offset around the halfway point between two doubles: m odd with 54 bits puts the
+// value exactly between two neighbours (ties to even go down for m = 2^53 + 1, up for 2^53 + 3);
+// +-1 below (a sticky bit far from the rounding bit) moves it off the tie.
+TEST(ToDouble, HalfwayCases) {
+  const std::vector<std::uint64_t> mantissas = {
+      (std::uint64_t(1) << 53) + 1, (std::uint64_t(1) << 53) + 3, (std::uint64_t(1) << 54) - 1,
+      (std::uint64_t(1) << 53) | 0x5555555555555ULL};
+  for (const std::uint64_t m : mantissas) {
+    for (int s = 0; s + 54 <= 127; ++s) {
+      const u128 v = u128(m) << s;
+      expectBothSigns(v);
+      expectBothSigns(v + 1);
+      if (v > 0) expectBothSigns(v - 1);
+    }
+  }
+}
+
+TEST(ToDouble, RandomValuesOfEveryLength) {
+  std::mt19937_64 rng(20261202);
+  for (int bits = 1; bits <= 127; ++bits) {
+    for (int i = 0; i < 2000; ++i) {
+      u128 v = (u128(rng()) << 64) | rng();
+      v >>= 128 - bits;
+      v |= u128(1) << (bits - 1);  // exactly `bits` bits
+      expectBothSigns(v);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace roiclip::detail
