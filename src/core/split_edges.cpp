@@ -98,7 +98,7 @@ class Sweep {
     freeEventPoints_.clear();
     nodes_.clear();
     freeNodes_.clear();
-    starts_.reserve(edges.size() * 2);
+    starts_.reserve(total * 2);  // exact edges with grid ends start here too
     frame_ = startFrame(edges, exactEdges);
     for (const InputEdge& e : edges) {
       SweepPiece a;

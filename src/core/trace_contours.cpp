@@ -138,7 +138,10 @@ Contours traceContours(const Arrangement& arrangement) {
   // grows while rings point into it.
   result.vertices.reserve(pieces.size());
   std::vector<int> onStack(vertexCount, -1);
+  // A walk holds at most every piece once: reserved, so the stacks never grow.
   std::vector<int> stackV, stackE;
+  stackV.reserve(pieces.size() + 1);
+  stackE.reserve(pieces.size());
   for (std::size_t start = 0; start < pieces.size(); ++start) {
     if (sides[start] == Side::None || used[start]) continue;
     const int v0 = from(int(start));
