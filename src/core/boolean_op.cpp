@@ -15,8 +15,8 @@ namespace {
 PolygonSet resolve(const std::vector<InputEdge>& edges, const std::vector<ExactEdge>& exactEdges,
                    const BooleanSpec& spec, const Grid& grid, Workspace& ws) {
   const Arrangement arrangement = splitEdges(edges, exactEdges, spec, ws);  // stages 1 and 2
-  const Contours contours = traceContours(arrangement);
-  return buildNesting(arrangement, contours, grid);
+  const Contours contours = traceContours(arrangement, ws.trace);
+  return buildNesting(arrangement, contours, grid, ws.nesting);
 }
 
 // Intersection with one convex ring: pre-clip the other operand to it, then resolve that alone.

@@ -13,34 +13,47 @@
 
 #include "output.hpp"
 #include "pipeline.hpp"
+#include "workspace.hpp"
 
 namespace roiclip::detail {
 
 PolygonSet buildNesting(const Arrangement& arrangement, const Contours& contours,
                         const Grid& grid) {
+  NestingScratch scratch;
+  return buildNesting(arrangement, contours, grid, scratch);
+}
+
+PolygonSet buildNesting(const Arrangement& arrangement, const Contours& contours, const Grid& grid,
+                        NestingScratch& scratch) {
   const auto& pieces = arrangement.pieces;
   const auto& rings = contours.rings;
 
   // Rings in the order of their reference pieces (each piece is the reference of one ring at
   // most): the piece below a ring's reference piece comes earlier in the sweep, so its ring has
   // been placed before.
-  std::vector<int> ringAtPiece(pieces.size(), -1);
+  std::vector<int>& ringAtPiece = scratch.ringAtPiece;
+  ringAtPiece.assign(pieces.size(), -1);
   std::size_t outerCount = 0;
   for (std::size_t r = 0; r < rings.size(); ++r) {
     ringAtPiece[std::size_t(rings[r].referencePiece)] = int(r);
     if (!rings[r].hole) ++outerCount;
   }
-  std::vector<int> order;
+  std::vector<int>& order = scratch.order;
+  order.clear();
   order.reserve(rings.size());
   for (int r : ringAtPiece) {
     if (r >= 0) order.push_back(r);
   }
 
   // For outer rings: the hole ring they lie in. For holes: their outer ring.
-  std::vector<int> owner(rings.size(), -1);
-  std::vector<int> polygonOf(rings.size(), -1);
-  std::vector<int> holeIndexOf(rings.size(), -1);
-  std::vector<bool> dropped(rings.size(), false);  // collapsed to < 3 points by the rounding
+  std::vector<int>& owner = scratch.owner;
+  std::vector<int>& polygonOf = scratch.polygonOf;
+  std::vector<int>& holeIndexOf = scratch.holeIndexOf;
+  std::vector<char>& dropped = scratch.dropped;  // collapsed to < 3 points by the rounding
+  owner.assign(rings.size(), -1);
+  polygonOf.assign(rings.size(), -1);
+  holeIndexOf.assign(rings.size(), -1);
+  dropped.assign(rings.size(), 0);
   PolygonSet result;
   result.polygons.reserve(outerCount);
 
@@ -52,7 +65,8 @@ PolygonSet buildNesting(const Arrangement& arrangement, const Contours& contours
   // pointers into paths, since a ring that rounding collapses is dropped with its path.
   const bool cache = contours.sharedVertices * 16 >= arrangement.vertices.size();
   constexpr double kUnset = std::numeric_limits<double>::quiet_NaN();
-  std::vector<Point> converted(cache ? arrangement.vertices.size() : 0, Point{kUnset, kUnset});
+  std::vector<Point>& converted = scratch.converted;
+  converted.assign(cache ? arrangement.vertices.size() : 0, Point{kUnset, kUnset});
   auto pointOf = [&](int v) {
     if (!cache) return frame.point(arrangement.vertices[std::size_t(v)]);
     Point& q = converted[std::size_t(v)];
@@ -86,7 +100,7 @@ PolygonSet buildNesting(const Arrangement& arrangement, const Contours& contours
     }
     // A ring inside a ring that rounding collapsed is smaller still: dropped with it.
     if (owner[r] >= 0 && dropped[owner[r]]) {
-      dropped[r] = true;
+      dropped[r] = 1;
       continue;
     }
     if (ring.hole && (owner[r] < 0 || polygonOf[owner[r]] < 0)) {
@@ -94,7 +108,7 @@ PolygonSet buildNesting(const Arrangement& arrangement, const Contours& contours
     }
     Path path = toPath(ring);
     if (path.size() < 3) {  // distinct exact points that round to fewer than 3 doubles
-      dropped[r] = true;
+      dropped[r] = 1;
       continue;
     }
     if (!ring.hole) {

@@ -18,7 +18,9 @@
 
 namespace roiclip::detail {
 
-struct Workspace;  // workspace.hpp: every array kept between calls
+struct Workspace;       // workspace.hpp: every array kept between calls
+struct TraceScratch;    // workspace.hpp: the working arrays of traceContours()
+struct NestingScratch;  // workspace.hpp: the working arrays of buildNesting()
 
 /// Operand index: 0 = subject, 1 = clip.
 constexpr int kOperands = 2;
@@ -232,6 +234,9 @@ struct Contours {
   ~Contours() = default;
 };
 Contours traceContours(const Arrangement& arrangement);
+/// The same, with its working arrays from `scratch` (a Workspace's; no allocation for them once
+/// they are large enough).
+Contours traceContours(const Arrangement& arrangement, TraceScratch& scratch);
 
 /// Snap one operand's paths to the grid as closed rings of grid points (repeats and straight
 /// runs removed); rings with fewer than 2 points are dropped.
@@ -264,6 +269,9 @@ void preclipConvexReference(const Rings& rings, const std::vector<IPoint>& conve
 /// coordinate correctly rounded (output.hpp). `grid` is the call's resolved grid, as for every
 /// stage (resolveGrid()).
 PolygonSet buildNesting(const Arrangement& arrangement, const Contours& contours, const Grid& grid);
+/// The same, with its working arrays from `scratch` (a Workspace's).
+PolygonSet buildNesting(const Arrangement& arrangement, const Contours& contours, const Grid& grid,
+                        NestingScratch& scratch);
 
 /// Stage 5, on request (snap_round.cpp, roundTo()): snap rounding. The pixel (the half-open
 /// square [c - 1/2, c + 1/2) of `unitsPerStep` working units around a point c of the step grid) of

@@ -15,6 +15,7 @@
 #include <roiclip/error.hpp>
 
 #include "pipeline.hpp"
+#include "workspace.hpp"
 
 namespace roiclip::detail {
 namespace {
@@ -81,7 +82,7 @@ bool inSectorCcw(IPoint a, IPoint b, IPoint c) {
 // Compressed rows: for each vertex, the result pieces whose `end(piece)` is that vertex.
 template <class End>
 void buildRows(const Arrangement& arrangement, int vertexCount, End end, std::vector<int>& first,
-               std::vector<int>& list) {
+               std::vector<int>& list, std::vector<int>& next) {
   const auto& sides = arrangement.sides;
   first.assign(std::size_t(vertexCount) + 1, 0);
   for (std::size_t e = 0; e < sides.size(); ++e) {
@@ -89,7 +90,7 @@ void buildRows(const Arrangement& arrangement, int vertexCount, End end, std::ve
   }
   for (int v = 0; v < vertexCount; ++v) first[std::size_t(v) + 1] += first[std::size_t(v)];
   list.resize(std::size_t(first[std::size_t(vertexCount)]));
-  std::vector<int> next(first.begin(), first.end() - 1);
+  next.assign(first.begin(), first.end() - 1);
   for (std::size_t e = 0; e < sides.size(); ++e) {
     if (sides[e] != Side::None) list[std::size_t(next[std::size_t(end(int(e)))]++)] = int(e);
   }
@@ -98,21 +99,30 @@ void buildRows(const Arrangement& arrangement, int vertexCount, End end, std::ve
 }  // namespace
 
 Contours traceContours(const Arrangement& arrangement) {
+  TraceScratch scratch;
+  return traceContours(arrangement, scratch);
+}
+
+Contours traceContours(const Arrangement& arrangement, TraceScratch& scratch) {
   const auto& sides = arrangement.sides;
   const auto& pieces = arrangement.pieces;
   const int vertexCount = int(arrangement.vertices.size());
   auto from = [&](int e) { return sides[e] == Side::Above ? pieces[e].left : pieces[e].right; };
   auto to = [&](int e) { return sides[e] == Side::Above ? pieces[e].right : pieces[e].left; };
 
-  std::vector<int> outFirst, outgoing, inFirst, incoming;
-  buildRows(arrangement, vertexCount, from, outFirst, outgoing);
-  buildRows(arrangement, vertexCount, to, inFirst, incoming);
+  std::vector<int>& outFirst = scratch.outFirst;
+  std::vector<int>& outgoing = scratch.outgoing;
+  std::vector<int>& inFirst = scratch.inFirst;
+  std::vector<int>& incoming = scratch.incoming;
+  buildRows(arrangement, vertexCount, from, outFirst, outgoing, scratch.next);
+  buildRows(arrangement, vertexCount, to, inFirst, incoming, scratch.next);
 
   // Arriving at a vertex along a piece, the walk goes on along the outgoing piece next to it
   // clockwise: both bound the same filled sector, so rings that share a vertex touch there
   // without crossing. Around a vertex incoming and outgoing pieces alternate (each has the
   // filled side on its left), so this pairs them one to one.
-  std::vector<int> pairOut(pieces.size(), -1);
+  std::vector<int>& pairOut = scratch.pairOut;
+  pairOut.assign(pieces.size(), -1);
   std::size_t sharedVertices = 0;
   std::vector<Ray> rays;
   for (int v = 0; v < vertexCount; ++v) {
@@ -129,7 +139,8 @@ Contours traceContours(const Arrangement& arrangement) {
     pairAtSharedVertex(pieces, v, &outgoing[std::size_t(outFirst[v])],
                        &incoming[std::size_t(inFirst[v])], outs, rays, pairOut);
   }
-  std::vector<char> used(pieces.size(), 0);
+  std::vector<char>& used = scratch.used;
+  used.assign(pieces.size(), 0);
 
   Contours result;
   result.ringOfPiece.assign(pieces.size(), -1);
@@ -137,9 +148,11 @@ Contours traceContours(const Arrangement& arrangement) {
   // At most one vertex per piece (a ring keeps a piece's start or drops it): the array never
   // grows while rings point into it.
   result.vertices.reserve(pieces.size());
-  std::vector<int> onStack(vertexCount, -1);
+  std::vector<int>& onStack = scratch.onStack;
+  onStack.assign(std::size_t(vertexCount), -1);
   // A walk holds at most every piece once: reserved, so the stacks never grow.
-  std::vector<int> stackV, stackE;
+  std::vector<int>& stackV = scratch.stackV;
+  std::vector<int>& stackE = scratch.stackE;
   stackV.reserve(pieces.size() + 1);
   stackE.reserve(pieces.size());
   for (std::size_t start = 0; start < pieces.size(); ++start) {

@@ -2,6 +2,8 @@
 // The one workspace: per-thread instance, lease with re-entry guard, recycling.
 #include "workspace.hpp"
 
+#include <type_traits>
+
 namespace roiclip::detail {
 namespace {
 
@@ -30,6 +32,8 @@ void Workspace::recycleAll() {
   recycle(next);
   recycle(clipped);
   recycle(edges);
+  trace.forEach([](auto& v) { recycle(v); });
+  nesting.forEach([](auto& v) { recycle(v); });
 }
 
 void Workspace::release() {
@@ -46,6 +50,8 @@ void Workspace::release() {
   std::vector<ClipVertex>().swap(next);
   std::vector<ExactEdge>().swap(clipped);
   std::vector<InputEdge>().swap(edges);
+  trace.forEach([](auto& v) { std::remove_reference_t<decltype(v)>().swap(v); });
+  nesting.forEach([](auto& v) { std::remove_reference_t<decltype(v)>().swap(v); });
 }
 
 WorkspaceLease::WorkspaceLease() { acquire(threadWorkspace()); }

@@ -119,6 +119,37 @@ struct ClipVertex {
   IPoint lineA, lineB;
 };
 
+/// The working arrays of traceContours() (trace_contours.cpp): per-vertex rows of the result
+/// pieces leaving and arriving, the pairing, and the walk. On small calls (W4: 10,000 contours of
+/// ~20 vertices) their allocations cost more than the tracing.
+struct TraceScratch {
+  std::vector<int> outFirst, outgoing, inFirst, incoming, next, pairOut, onStack, stackV, stackE;
+  std::vector<char> used;
+  /// Every array, for recycleAll() / release().
+  template <class F>
+  void forEach(F f) {
+    for (std::vector<int>* v :
+         {&outFirst, &outgoing, &inFirst, &incoming, &next, &pairOut, &onStack, &stackV, &stackE}) {
+      f(*v);
+    }
+    f(used);
+  }
+};
+
+/// The working arrays of buildNesting() (nesting.cpp): rings in sweep order, each ring's owner,
+/// polygon and hole index, the rings rounding collapsed, the converted-vertex cache.
+struct NestingScratch {
+  std::vector<int> ringAtPiece, order, owner, polygonOf, holeIndexOf;
+  std::vector<char> dropped;
+  std::vector<Point> converted;
+  template <class F>
+  void forEach(F f) {
+    for (std::vector<int>* v : {&ringAtPiece, &order, &owner, &polygonOf, &holeIndexOf}) f(*v);
+    f(dropped);
+    f(converted);
+  }
+};
+
 /// Every kept working array of the pipeline. A workspace serves one call at a time.
 struct Workspace {
   // Sweep (split_edges.cpp).
@@ -136,6 +167,10 @@ struct Workspace {
   std::vector<ClipVertex> path, next;
   std::vector<ExactEdge> clipped;
   std::vector<InputEdge> edges;
+  // Tracing (trace_contours.cpp).
+  TraceScratch trace;
+  // Nesting (nesting.cpp).
+  NestingScratch nesting;
 
   /// Re-entry guard: set while a call uses this workspace (see WorkspaceLease).
   std::atomic<bool> busy{false};
