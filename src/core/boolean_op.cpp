@@ -16,6 +16,7 @@ PolygonSet resolve(const std::vector<InputEdge>& edges, const std::vector<ExactE
                    const BooleanSpec& spec, const Grid& grid, Workspace& ws) {
   const Arrangement arrangement = splitEdges(edges, exactEdges, spec, ws);  // stages 1 and 2
   const Contours contours = traceContours(arrangement, ws.trace);
+  ws.trace.releaseIfAbove(std::size_t(1) << 20);  // not held through nesting, the peak
   return buildNesting(arrangement, contours, grid, ws.nesting);
 }
 

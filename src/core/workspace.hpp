@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <deque>
 #include <memory>
+#include <type_traits>
 #include <vector>
 
 #include <boost/intrusive/set.hpp>
@@ -133,6 +134,14 @@ struct TraceScratch {
       f(*v);
     }
     f(used);
+  }
+  /// Frees every array when together they hold more than `bytes`: the peak of a large call is
+  /// in nesting, after tracing, so large tracing arrays are not kept through it; small calls
+  /// keep theirs (no allocation on the next call).
+  void releaseIfAbove(std::size_t bytes) {
+    std::size_t held = 0;
+    forEach([&](auto& v) { held += v.capacity() * sizeof(v[0]); });
+    if (held > bytes) forEach([](auto& v) { std::remove_reference_t<decltype(v)>().swap(v); });
   }
 };
 
