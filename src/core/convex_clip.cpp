@@ -45,22 +45,16 @@ XPoint crossing(const Vertex& from, IPoint hA, IPoint hB) {
   return x;
 }
 
-// orient() of a path vertex: grid points in int64.
-inline int sideOf(IPoint hA, IPoint hB, const XPoint& p) {
-  return p.w == 1 ? orientInGrid(hA, hB, IPoint{std::int64_t(p.x), std::int64_t(p.y)})
-                  : orient(hA, hB, p);
-}
-
 // One Sutherland-Hodgman step over the edges in[i] -> in[i + 1] and in[n - 1] -> a vertex on
 // side `endSide` of hA -> hB: keep the part on the left (points on the line count as inside),
 // appended to `out`.
 void clipEdges(const std::vector<Vertex>& in, int endSide, IPoint hA, IPoint hB,
                std::vector<Vertex>& out) {
   const std::size_t n = in.size();
-  int sp = sideOf(hA, hB, in[0].p);
+  int sp = orientInBox(hA, hB, in[0].p);
   for (std::size_t i = 0; i < n; ++i) {
     const Vertex& p = in[i];
-    const int sq = i + 1 < n ? sideOf(hA, hB, in[i + 1].p) : endSide;
+    const int sq = i + 1 < n ? orientInBox(hA, hB, in[i + 1].p) : endSide;
     if (sp >= 0) {
       out.push_back(p);
       if (sq < 0) {
@@ -82,9 +76,8 @@ void clipEdges(const std::vector<Vertex>& in, int endSide, IPoint hA, IPoint hB,
 void clipHalfPlane(const std::vector<Vertex>& in, IPoint hA, IPoint hB, std::vector<Vertex>& out) {
   out.clear();
   if (in.empty()) return;
-  out.reserve(in.size() +
-              16);  // usually a few crossings more than the input (no growth by doubling)
-  clipEdges(in, sideOf(hA, hB, in[0].p), hA, hB, out);
+  out.reserve(in.size() + 16);  // a few crossings more than the input: no growth by doubling
+  clipEdges(in, orientInBox(hA, hB, in[0].p), hA, hB, out);
 }
 
 // One step on an open chain in[0] .. in[n-1], `end` (both in C, so inside the half-plane): what
@@ -114,14 +107,6 @@ void emitExact(const Vertex& v, const XPoint& w, std::vector<ExactEdge>& out) {
 void emitClosed(const std::vector<Vertex>& path, std::vector<ExactEdge>& out) {
   for (std::size_t i = 0; i < path.size(); ++i)
     emitExact(path[i], path[(i + 1) % path.size()].p, out);
-}
-
-void emitInput(IPoint s, IPoint t, std::vector<InputEdge>& out) {
-  if (s < t) {
-    out.push_back({s, t, +1, 0});
-  } else {
-    out.push_back({t, s, -1, 0});
-  }
 }
 
 // The convex ring with its inside on the left.
@@ -240,7 +225,7 @@ class RingClipper {
     const std::size_t n = ring.size();
     const auto after = [n](std::size_t i) { return i + 1 < n ? i + 1 : 0; };
     if (after(start) == end) {
-      emitInput(ring[start], ring[end], edges_);
+      edges_.push_back(closedEdge(ring[start], ring[end], 0));
       return;
     }
     path_.clear();

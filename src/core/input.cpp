@@ -211,13 +211,7 @@ void appendInputEdges(const Paths& paths, int operand, const Grid& grid,
 void appendRingEdges(const Rings& rings, int operand, std::vector<InputEdge>& out) {
   for (const std::vector<IPoint>& ring : rings) {
     for (std::size_t i = 0; i < ring.size(); ++i) {
-      const IPoint s = ring[i];
-      const IPoint t = ring[(i + 1) % ring.size()];
-      if (s < t) {
-        out.push_back({s, t, +1, operand});
-      } else {
-        out.push_back({t, s, -1, operand});
-      }
+      out.push_back(closedEdge(ring[i], ring[(i + 1) % ring.size()], operand));
     }
   }
 }

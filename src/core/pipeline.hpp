@@ -34,6 +34,11 @@ struct InputEdge {
   bool open = false;  ///< a segment of an open polyline: it bounds nothing, it is only cut
 };
 
+/// The edge s -> t of a closed path of `operand`, its ends in lexicographic order.
+inline InputEdge closedEdge(IPoint s, IPoint t, int operand) {
+  return s < t ? InputEdge{s, t, +1, operand} : InputEdge{t, s, -1, operand};
+}
+
 /// An input edge whose ends are exact points (crossings) on the integer segment lineA-lineB;
 /// made by the convex pre-clip. left < right lexicographically.
 struct ExactEdge {
@@ -47,17 +52,6 @@ struct ExactEdge {
 /// every closed path. Throws InvalidInputError naming the path and vertex.
 void appendInputEdges(const Paths& paths, int operand, const Grid& grid,
                       std::vector<InputEdge>& out);
-
-/// orient() for grid points within the grid's range, |x|, |y| <= Grid::kMaxUnits = 2^30 units
-/// of the origin (every snapped point): the differences are at most 2^31 and each product at
-/// most 2^62 in magnitude, so both products fit int64 and comparing them (no subtraction, which
-/// could reach 2^63) gives the exact sign.
-inline int orientInGrid(IPoint a, IPoint b, IPoint c) {
-  static_assert(Grid::kMaxUnits <= (std::int64_t{1} << 30), "the bound above assumes 2^30");
-  const std::int64_t l = (b.x - a.x) * (c.y - a.y);
-  const std::int64_t r = (b.y - a.y) * (c.x - a.x);
-  return (l > r) - (l < r);
-}
 
 /// Closed rings of grid points, as snapRings() makes them.
 using Rings = std::vector<std::vector<IPoint>>;
@@ -138,8 +132,6 @@ struct OpenPiece {
   LinePlace place = LinePlace::Outside;
 };
 
-/// A piece of the planar arrangement: a maximal part of one or more coincident input edges
-/// that no other edge crosses or touches except at its two ends.
 /// Winding numbers as an arrangement stores them. A winding number is a sum of +-1 over input
 /// edges, and the sweep numbers its pieces with int, so it fits 32 bits.
 using CompactWindings = std::array<std::int32_t, kOperands>;
@@ -147,7 +139,9 @@ inline CompactWindings compact(const Windings& w) {
   return {std::int32_t(w[0]), std::int32_t(w[1])};
 }
 
-/// 64 bytes (W3-1k-evenodd keeps 465k of them: they were 80 with 64-bit windings).
+/// A piece of the planar arrangement: a maximal part of one or more coincident input edges
+/// that no other edge crosses or touches except at its two ends. 64 bytes (W3-1k-evenodd keeps
+/// 465k of them: they were 80 with 64-bit windings).
 struct EdgePiece {
   IPoint lineA, lineB;  ///< the grid segment it lies on (lineA < lineB)
   int left = -1;        ///< vertex id of the lexicographically smaller end

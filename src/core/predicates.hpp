@@ -92,6 +92,17 @@ inline int orient(IPoint a, IPoint b, IPoint c) {
   return signOf(v);
 }
 
+/// orient() for grid points within the grid's range, |x|, |y| <= Grid::kMaxUnits = 2^30 units
+/// of the origin (every snapped point): the differences are at most 2^31 and each product at
+/// most 2^62 in magnitude, so both products fit int64 and comparing them (no subtraction, which
+/// could reach 2^63) gives the exact sign.
+inline int orientInGrid(IPoint a, IPoint b, IPoint c) {
+  static_assert(Grid::kMaxUnits <= (std::int64_t{1} << 30), "the bound above assumes 2^30");
+  const std::int64_t l = (b.x - a.x) * (c.y - a.y);
+  const std::int64_t r = (b.y - a.y) * (c.x - a.x);
+  return (l > r) - (l < r);
+}
+
 /// The exact part of orient(a, b, c) for an off-grid c.
 [[gnu::noinline]] inline int orientExact(IPoint a, IPoint b, const XPoint& c) {
   // Exact in 128 bits: |X|, |Y| < 3 * 2^93 and |a * W| <= 2^93, so |ex|, |ey| < 2^95.4, and
@@ -131,7 +142,7 @@ inline int orient(IPoint a, IPoint b, const XPoint& c) {
 /// times that (its own rounding, one addition, is 2^-53 of it).
 inline int orientInBox(IPoint a, IPoint b, const XPoint& c) {
   static_assert(Grid::kMaxUnits <= (std::int64_t{1} << 30), "the bound below assumes 2^30");
-  if (c.w == 1) return orient(a, b, IPoint{std::int64_t(c.x), std::int64_t(c.y)});
+  if (c.w == 1) return orientInGrid(a, b, IPoint{std::int64_t(c.x), std::int64_t(c.y)});
   const double ux = double(b.x - a.x), uy = double(b.y - a.y);
   const double cx = c.fx - double(a.x), cy = c.fy - double(a.y);
   const double v = ux * cy - uy * cx;

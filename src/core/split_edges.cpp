@@ -53,26 +53,6 @@ inline bool atGridPoint(const XPoint& p, IPoint q) { return p.w == 1 && p.x == q
 
 inline IPoint gridPoint(const XPoint& p) { return {std::int64_t(p.x), std::int64_t(p.y)}; }
 
-// The corner of the grid ends of all edges (the start keys are relative to it).
-StartFrame startFrame(const std::vector<InputEdge>& edges,
-                      const std::vector<ExactEdge>& exactEdges) {
-  std::int64_t lo[2] = {Grid::kMaxUnits, Grid::kMaxUnits}, hi[2] = {-lo[0], -lo[1]};
-  const auto add = [&](IPoint p) {
-    lo[0] = std::min(lo[0], p.x), hi[0] = std::max(hi[0], p.x);
-    lo[1] = std::min(lo[1], p.y), hi[1] = std::max(hi[1], p.y);
-  };
-  for (const InputEdge& e : edges) add(e.a), add(e.b);
-  for (const ExactEdge& e : exactEdges) {
-    if (e.left.w == 1) add(gridPoint(e.left));
-    if (e.right.w == 1) add(gridPoint(e.right));
-  }
-  constexpr std::int64_t kKeyRange = std::int64_t{1} << 32;
-  if (hi[0] - lo[0] >= kKeyRange || hi[1] - lo[1] >= kKeyRange) {
-    throw InternalError("splitEdges: coordinate bound violated");
-  }
-  return {lo[0], lo[1]};
-}
-
 class Sweep {
  public:
   Sweep(const std::vector<InputEdge>& edges, const std::vector<ExactEdge>& exactEdges,
@@ -99,7 +79,6 @@ class Sweep {
     nodes_.clear();
     freeNodes_.clear();
     starts_.reserve(total * 2);  // exact edges with grid ends start here too
-    frame_ = startFrame(edges, exactEdges);
     for (const InputEdge& e : edges) {
       SweepPiece a;
       a.left = XPoint(e.a);
@@ -503,7 +482,7 @@ class Sweep {
   int vertex_ = -1;
   std::vector<SweepPiece>& pieces_;
   std::vector<SweepStart>& starts_;
-  StartFrame frame_;
+  const StartFrame frame_;  // the grid range's corner
   std::size_t cursor_ = 0;
   std::vector<SweepEvent>& queue_;
   std::vector<ExactCoords>& eventPoints_;

@@ -79,10 +79,12 @@ struct SweepStart {
 };
 static_assert(sizeof(SweepStart) == 16, "80k of these are sorted on W1-100k: keep them small");
 
-/// The corner the sweep's start keys are relative to, and the conversions both ways.
+/// The corner the sweep's start keys are relative to, and the conversions both ways. Every sweep
+/// point lies within the grid's range (|coordinates| <= Grid::kMaxUnits, as the in-box
+/// predicates assume too), so the range's own corner serves every call: no pass over the edges.
 struct StartFrame {
   static_assert(Grid::kMaxUnits <= (std::int64_t{1} << 30), "differences must fit 32 bits");
-  std::int64_t minX = 0, minY = 0;
+  std::int64_t minX = -Grid::kMaxUnits, minY = -Grid::kMaxUnits;
   [[nodiscard]] std::uint64_t key(IPoint p) const {
     return std::uint64_t(p.x - minX) << 32 | std::uint64_t(p.y - minY);
   }
