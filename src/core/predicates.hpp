@@ -181,11 +181,11 @@ inline int compareCached(double da, double db) {
 /// double is then within 2^-51 * 2^30 = 2^-21 of its exact value, so |(a - b) - (da - db)| <=
 /// 2^-20, and a rounded difference beyond 2^-18 (also rounded by at most 2^-53 of itself) has
 /// the sign of a - b.
+constexpr double kCachedInBoxBound = 0x1p-18;
 inline int compareCachedInBox(double da, double db) {
   static_assert(Grid::kMaxUnits <= (std::int64_t{1} << 30), "the bound below assumes 2^30");
-  constexpr double kBound = 0x1p-18;
-  if (da - db > kBound) return 1;
-  if (db - da > kBound) return -1;
+  if (da - db > kCachedInBoxBound) return 1;
+  if (db - da > kCachedInBoxBound) return -1;
   return 0;
 }
 

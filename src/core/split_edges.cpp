@@ -23,9 +23,6 @@
 namespace roiclip::detail {
 namespace {
 
-// Earliest point first in the event heap (std::push_heap keeps the largest on top). The events'
-// cached x decides most comparisons (every sweep point lies within the grid's range, see
-// compareCachedInBox()); the rest compare the exact points in the pool.
 // The exact point of an event: its coordinates from the pool, its cached doubles.
 inline XPoint eventPoint(const SweepEvent& e, const std::vector<ExactCoords>& points) {
   const ExactCoords& c = points[std::size_t(e.point)];
@@ -38,14 +35,20 @@ inline XPoint eventPoint(const SweepEvent& e, const std::vector<ExactCoords>& po
   return p;
 }
 
-struct EventAfter {
-  const std::vector<ExactCoords>* points;
-  bool operator()(const SweepEvent& a, const SweepEvent& b) const {
-    const int c = compareCachedInBox(a.fx, b.fx);
-    if (c != 0) return c > 0;
-    return a.point != b.point && lessInBox(eventPoint(b, *points), eventPoint(a, *points));
-  }
-};
+// Whether event a comes after event b. The events' cached x decides almost every comparison
+// (every sweep point lies within the grid's range: compareCachedInBox(), whose test this is,
+// written so that the decided case is one predictable branch and a flag, not a second branch
+// on the order); the rest compare the exact points in the pool.
+[[gnu::noinline]] bool eventAfterExact(const SweepEvent& a, const SweepEvent& b,
+                                       const std::vector<ExactCoords>& points) {
+  return a.point != b.point && lessInBox(eventPoint(b, points), eventPoint(a, points));
+}
+inline bool eventAfter(const SweepEvent& a, const SweepEvent& b,
+                       const std::vector<ExactCoords>& points) {
+  const double d = a.fx - b.fx;  // exactly -(b.fx - a.fx): compareCachedInBox()'s two tests
+  if (__builtin_expect(std::fabs(d) > kCachedInBoxBound, 1)) return d > 0;
+  return eventAfterExact(a, b, points);
+}
 
 // q == p for a grid point q: grid points always have W == 1 (lineIntersection() stores
 // crossings on the grid so), so an off-grid p never equals q.
@@ -166,10 +169,31 @@ class Sweep {
   using Status = boost::intrusive::set<
       StatusNode, boost::intrusive::member_hook<StatusNode, StatusHook, &StatusNode::hook>,
       boost::intrusive::compare<StatusLess>, boost::intrusive::constant_time_size<false>>;
-  using Node = Status::iterator;
 
-  SweepPiece& piece(Node it) { return pieces_[std::size_t(it->piece)]; }
-  static int nodeIndex(Node it) { return it->self; }
+  // Links node x into the status just below node `at` (null: at the top): the tree by position
+  // (no comparison) and the neighbour links.
+  void linkBelow(StatusNode* at, StatusNode* x) {
+    x->below = at != nullptr ? at->below : top_;
+    x->above = at;
+    if (x->below != nullptr) x->below->above = x;
+    if (at != nullptr) {
+      at->below = x;
+    } else {
+      top_ = x;
+    }
+    status_.insert_before(at != nullptr ? status_.iterator_to(*at) : status_.end(), *x);
+  }
+  // Unlinks node x; returns the node that was above it.
+  StatusNode* unlink(StatusNode* x) {
+    if (x->below != nullptr) x->below->above = x->above;
+    if (x->above != nullptr) {
+      x->above->below = x->below;
+    } else {
+      top_ = x->below;
+    }
+    status_.erase(status_.iterator_to(*x));
+    return x->above;
+  }
 
   // x must not lie in eventPoints_ (it may move).
   void push(const XPoint& x, int pieceId, int through = -1, int other = -1) {
@@ -182,13 +206,37 @@ class Sweep {
       slot = int(eventPoints_.size());
       eventPoints_.push_back({x.x, x.y, x.w});
     }
-    queue_.push_back({x.fx, x.fy, slot, pieceId, through, other});
-    std::push_heap(queue_.begin(), queue_.end(), EventAfter{&eventPoints_});
+    // Binary heap, earliest event at the root: the new event climbs from a new leaf.
+    queue_.emplace_back();
+    placeFrom(queue_.size() - 1, {x.fx, x.fy, slot, pieceId, through, other});
   }
+  // Puts ev at `hole` or, while its parent comes after it, moves the parent down and climbs.
+  void placeFrom(std::size_t hole, const SweepEvent& ev) {
+    while (hole > 0) {
+      const std::size_t parent = (hole - 1) / 2;
+      if (!eventAfter(queue_[parent], ev, eventPoints_)) break;
+      queue_[hole] = queue_[parent];
+      hole = parent;
+    }
+    queue_[hole] = ev;
+  }
+  // Removes the earliest event (Floyd's order: the hole at the root sinks to a leaf along the
+  // earlier child, one comparison per level, and the last event climbs back from there; it
+  // mostly stays near the bottom).
   void pop() {
-    std::pop_heap(queue_.begin(), queue_.end(), EventAfter{&eventPoints_});
-    freeEventPoints_.push_back(queue_.back().point);
+    freeEventPoints_.push_back(queue_.front().point);
+    const SweepEvent last = queue_.back();
     queue_.pop_back();
+    const std::size_t n = queue_.size();
+    if (n == 0) return;
+    std::size_t hole = 0;
+    for (std::size_t child = 1; child < n; child = 2 * hole + 1) {
+      if (child + 1 < n)
+        child += std::size_t(eventAfter(queue_[child], queue_[child + 1], eventPoints_));
+      queue_[hole] = queue_[child];
+      hole = child;
+    }
+    placeFrom(hole, last);
   }
   [[nodiscard]] const SweepEvent& top() const { return queue_.front(); }
   [[nodiscard]] XPoint topPoint() const { return eventPoint(queue_.front(), eventPoints_); }
@@ -229,11 +277,12 @@ class Sweep {
     starting_.clear();
     const auto [locator, known] = takeEventsAt(p);
     const auto [lo, hi] = piecesThrough(p, locator, known);
-    const int below = lo == status_.begin() ? -1 : std::prev(lo)->piece;
+    const StatusNode* belowNode = lo != nullptr ? lo->below : top_;
+    const int below = belowNode != nullptr ? belowNode->piece : -1;
     cutAt(lo, hi, p);
     mergeCoincident();
     insertStarting(lo, hi, below, p);
-    const int above = hi == status_.end() ? -1 : hi->piece;
+    const int above = hi != nullptr ? hi->piece : -1;
     if (starting_.empty()) {
       checkCrossing(below, above, p);
     } else {
@@ -251,7 +300,7 @@ class Sweep {
       const SweepStart& ev = starts_[cursor_];
       if (!ev.end) {
         starting_.push_back(ev.piece);
-      } else if (pieces_[ev.piece].node >= 0 && equalInBox(pieces_[ev.piece].right, p)) {
+      } else if (pieces_[ev.piece].node != nullptr && equalInBox(pieces_[ev.piece].right, p)) {
         locator = ev.piece;
       }
       ++cursor_;
@@ -263,7 +312,7 @@ class Sweep {
       // status started before p and ends at or after it (its right end is an event): so each
       // of the two still in the status passes through p, without an orientation test.
       if (ev.through >= 0 && locator < 0) {
-        const bool a = pieces_[ev.through].node >= 0, b = pieces_[ev.other].node >= 0;
+        const bool a = pieces_[ev.through].node != nullptr, b = pieces_[ev.other].node != nullptr;
         if (a || b) {
           locator = a ? ev.through : ev.other;
           known = a && b ? ev.other : -1;
@@ -274,34 +323,36 @@ class Sweep {
     return {locator, known};
   }
 
-  // The pieces through p are contiguous in the status: [lo, hi).
-  std::pair<Node, Node> piecesThrough(const XPoint& p, int locator, int known) {
-    const auto passes = [&](Node it) {
-      if (it->piece == known) return true;
-      const SweepPiece& a = piece(it);
+  // The pieces through p are contiguous in the status: the nodes from lo up to hi, hi excluded
+  // (null: above the top).
+  std::pair<StatusNode*, StatusNode*> piecesThrough(const XPoint& p, int locator, int known) {
+    const auto passes = [&](const StatusNode* n) {
+      if (n->piece == known) return true;
+      const SweepPiece& a = pieces_[std::size_t(n->piece)];
       return orientInBox(a.lineA, a.lineB, p) == 0;
     };
-    Node lo, hi;
+    StatusNode *lo, *hi;
     if (locator >= 0) {
-      lo = status_.iterator_to(nodes_[std::size_t(pieces_[locator].node)]);
-      hi = std::next(lo);
-      while (lo != status_.begin() && passes(std::prev(lo))) --lo;
+      lo = pieces_[std::size_t(locator)].node;
+      hi = lo->above;
+      while (lo->below != nullptr && passes(lo->below)) lo = lo->below;
     } else {
-      lo = status_.lower_bound(p, PointLess{&pieces_});
+      const auto it = status_.lower_bound(p, PointLess{&pieces_});
+      lo = it == status_.end() ? nullptr : &*it;
       hi = lo;
     }
-    while (hi != status_.end() && passes(hi)) ++hi;
+    while (hi != nullptr && passes(hi)) hi = hi->above;
     return {lo, hi};
   }
 
   // Every piece through p ends here: its result piece gets p as right end, and the ones that go
   // on start again at p. Their nodes stay in the tree for insertStarting() to reuse or drop.
-  void cutAt(Node lo, Node hi, const XPoint& p) {
+  void cutAt(const StatusNode* lo, const StatusNode* hi, const XPoint& p) {
     through_.clear();
-    for (Node it = lo; it != hi; ++it) through_.push_back(it->piece);
+    for (const StatusNode* n = lo; n != hi; n = n->above) through_.push_back(n->piece);
     for (int i : through_) {
       SweepPiece& a = pieces_[i];
-      a.node = -1;
+      a.node = nullptr;
       if (a.slot >= 0) out_.pieces[a.slot].right = vertexHere(p);
       if (a.open) out_.openPieces.push_back({i, a.left, p, a.place});
       if (!equalInBox(a.right, p)) {
@@ -316,12 +367,12 @@ class Sweep {
   // in place of the pieces through p: every one of them lies between `below` and hi, so the
   // nodes [lo, hi) are reused in order (a chain going on, two pieces crossing) and only the
   // surplus is unlinked or linked, without comparisons.
-  void insertStarting(Node lo, Node hi, int below, const XPoint& p) {
+  void insertStarting(StatusNode* lo, StatusNode* hi, int below, const XPoint& p) {
     Windings wind = below >= 0 ? pieces_[below].windAbove() : Windings{};
     int resultBelow = below >= 0 ? pieces_[below].nearestResult() : -1;
     int closedRun = -1;  // the last closed piece inserted here, and the winding below it
     Windings closedRunBelow{};
-    Node node = lo;  // the first node of [lo, hi) not yet holding a starting piece
+    StatusNode* n = lo;  // the first node from lo up to hi not yet holding a starting piece
     for (int i : starting_) {
       SweepPiece& a = pieces_[i];
       a.windBelow = wind;
@@ -353,30 +404,30 @@ class Sweep {
       }
       wind = a.windAbove();
       resultBelow = a.nearestResult();
-      if (node != hi) {  // same position in the order, see above
-        node->piece = i;
-        a.node = nodeIndex(node++);
+      if (n != hi) {  // same position in the order, see above
+        n->piece = i;
+        a.node = n;
+        n = n->above;
       } else {
         a.node = newNode(i);
-        status_.insert_before(hi, nodes_[std::size_t(a.node)]);
+        linkBelow(hi, a.node);
       }
     }
-    while (node != hi) {
-      freeNodes_.push_back(nodeIndex(node));
-      node = status_.erase(node);
+    while (n != hi) {
+      freeNodes_.push_back(n);
+      n = unlink(n);
     }
   }
 
-  int newNode(int pieceId) {
-    int n;
+  StatusNode* newNode(int pieceId) {
+    StatusNode* n;
     if (!freeNodes_.empty()) {
       n = freeNodes_.back();
       freeNodes_.pop_back();
     } else {
-      n = int(nodes_.size());
-      nodes_.emplace_back().self = n;
+      n = &nodes_.emplace_back();
     }
-    nodes_[std::size_t(n)].piece = pieceId;
+    n->piece = pieceId;
     return n;
   }
 
@@ -490,8 +541,9 @@ class Sweep {
   std::vector<int>& starting_;
   std::vector<int>& through_;
   std::deque<StatusNode>& nodes_;
-  std::vector<int>& freeNodes_;
+  std::vector<StatusNode*>& freeNodes_;
   Status status_;
+  StatusNode* top_ = nullptr;  // the top node of the status, null when it is empty
   Arrangement out_;
 };
 

@@ -43,7 +43,7 @@ void Workspace::release() {
   std::vector<ExactCoords>().swap(eventPoints);
   std::vector<int>().swap(freeEventPoints);
   std::deque<StatusNode>().swap(nodes);
-  std::vector<int>().swap(freeNodes);
+  std::vector<StatusNode*>().swap(freeNodes);
   std::vector<int>().swap(starting);
   std::vector<int>().swap(through);
   std::vector<ClipVertex>().swap(path);
