@@ -445,7 +445,8 @@ class Sweep {
     };
     const auto cancels = [this](int i) {
       const SweepPiece& a = pieces_[i];
-      return !a.open && a.contribution[0] == 0 && a.contribution[1] == 0;
+      // One flag, not three branches: whether a contribution is zero is data, not a pattern.
+      return (!a.open & (a.contribution[0] == 0) & (a.contribution[1] == 0)) != 0;
     };
     // Mostly one piece (a chain going on) or two (a crossing): no sort call for those, and two
     // in different directions (a crossing) have nothing to merge.
@@ -483,9 +484,9 @@ class Sweep {
 
   // Whether piece b was one of the last pieces tested above `a`; records it if not.
   static bool testedBefore(SweepPiece& a, int b) {
-    for (int seen : a.checkedAbove) {
-      if (seen == b) return true;
-    }
+    bool seen = false;  // all eight compared without an early exit: one branch, not eight
+    for (int c : a.checkedAbove) seen |= c == b;
+    if (seen) return true;
     a.checkedAbove[a.checkedNext] = b;
     a.checkedNext = std::uint8_t((a.checkedNext + 1) % a.checkedAbove.size());
     return false;

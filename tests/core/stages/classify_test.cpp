@@ -57,6 +57,39 @@ TEST(StageClassify, BinaryOperationsCombineBothOperands) {
   EXPECT_EQ(detail::classifyPiece(w(1, 1), w(0, 1), how), detail::Side::Below);
 }
 
+// inside() looks the operation up in a truth table; here every operation, every pair of fill
+// rules and every pair of winding numbers in [-3, 3] against the operations' definitions.
+TEST(StageClassify, InsideIsTheOperationOfBothFillRules) {
+  const FillRule rules[] = {FillRule::EvenOdd, FillRule::NonZero, FillRule::Positive,
+                            FillRule::Negative};
+  const ClipOp ops[] = {ClipOp::Intersection, ClipOp::Union, ClipOp::Difference, ClipOp::Xor};
+  int checked = 0;
+  for (const FillRule subjectRule : rules) {
+    for (const FillRule clipRule : rules) {
+      for (int sw = -3; sw <= 3; ++sw) {
+        for (int cw = -3; cw <= 3; ++cw) {
+          const bool s = isFilled(subjectRule, sw), c = isFilled(clipRule, cw);
+          auto simplify = stages::simplifyWith(subjectRule);
+          EXPECT_EQ(simplify.inside(w(sw, cw)), s);
+          for (const ClipOp op : ops) {
+            auto spec = stages::clipWith(op);
+            spec.subjectRule = subjectRule;
+            spec.clipRule = clipRule;
+            const bool expected = op == ClipOp::Intersection ? s && c
+                                  : op == ClipOp::Union      ? s || c
+                                  : op == ClipOp::Difference ? s && !c
+                                                             : s != c;
+            EXPECT_EQ(spec.inside(w(sw, cw)), expected)
+                << "op " << int(op) << " windings " << sw << ", " << cw;
+            ++checked;
+          }
+        }
+      }
+    }
+  }
+  EXPECT_EQ(checked, 4 * 4 * 7 * 7 * 4);
+}
+
 TEST(StageClassify, OpenPiecesAreInsideOnTheBoundaryOrOutside) {
   const auto how = stages::simplifyWith(FillRule::EvenOdd);
   EXPECT_EQ(detail::classifyOpenPiece(w(1), w(1), how), detail::LinePlace::Inside);
