@@ -63,6 +63,24 @@ inline double toDouble(i128 v) {
   return v < 0 ? -r : r;
 }
 
+/// A double within (2^-53 + 2^-62) |v| of v: toDouble() without the sticky bit, for the cached
+/// doubles of crossings (pointAlong()), where the 128-bit mask of the sticky bit was the largest
+/// single cost of the conversion. |v| is truncated to its 63 leading bits (an error below 2^-62
+/// of |v|, as |v| >= 2^62 there) and that value is rounded to the nearest double (2^-53).
+inline double toDoubleWithin(i128 v) {
+  if (v == i128(std::int64_t(v))) return double(std::int64_t(v));
+  using u128 = unsigned __int128;
+  const u128 u = v < 0 ? -u128(v) : u128(v);
+  const auto high = std::uint64_t(u >> 64);
+  const int bits = high != 0 ? 128 - __builtin_clzll(high) : 64;
+  const int shift = bits - 63;
+  const std::uint64_t scaleBits = std::uint64_t(1023 + shift) << 52;
+  double scale;
+  std::memcpy(&scale, &scaleBits, sizeof scale);
+  const double r = double(std::int64_t(std::uint64_t(u >> shift))) * scale;
+  return v < 0 ? -r : r;
+}
+
 /// An exact point (X/W, Y/W), W > 0. Grid points have W == 1. The nearest doubles are cached
 /// for the floating-point filters.
 struct XPoint {
@@ -239,8 +257,10 @@ inline void pointAlong(IPoint a, IPoint b, i128 num, i128 den, XPoint& out) {
   // for any representation. Crossings on the grid are stored with W == 1 for the fast paths;
   // the double quotient is within 2^-50 relative of the exact one, so a grid point is always
   // caught, and the exact product check rejects near misses.
+  // Each quotient is within 2^-51 of x / den relative, as every cached double: x within
+  // 2^-53 + 2^-62 (toDoubleWithin()), den and the division within 2^-53 each.
   const double fden = toDouble(den);
-  const double fx = toDouble(x) / fden, fy = toDouble(y) / fden;
+  const double fx = toDoubleWithin(x) / fden, fy = toDoubleWithin(y) / fden;
   const double rx = double(std::int64_t(fx + (fx >= 0 ? 0.5 : -0.5)));
   const double ry = double(std::int64_t(fy + (fy >= 0 ? 0.5 : -0.5)));
   if (std::fabs(fx - rx) < 1e-3 && std::fabs(fy - ry) < 1e-3 && i128(rx) * den == x &&

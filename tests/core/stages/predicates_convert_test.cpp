@@ -81,5 +81,42 @@ TEST(ToDouble, RandomValuesOfEveryLength) {
   }
 }
 
+// toDoubleWithin() (the crossings' cached doubles): within (2^-53 + 2^-62) |v| of v, checked in
+// integers, and the same as toDouble() for values that fit 64 bits.
+void expectWithin(i128 v) {
+  const double got = toDoubleWithin(v);
+  const u128 magnitude = v < 0 ? -u128(v) : u128(v);
+  ASSERT_EQ(got < 0, v < 0);
+  // |got| is an integer (|v| >= 2^63 here, or the conversion is exact) below 2^128.
+  const u128 g = u128(got < 0 ? -got : got);
+  const u128 error = g > magnitude ? g - magnitude : magnitude - g;
+  EXPECT_LE(error, (magnitude >> 53) + (magnitude >> 62))
+      << "high " << std::uint64_t(u128(v) >> 64) << " low " << std::uint64_t(v);
+  if (v == i128(std::int64_t(v))) EXPECT_EQ(bitsOf(got), bitsOf(toDouble(v)));
+}
+
+TEST(ToDoubleWithin, ErrorBoundOnEdgesHalfwayCasesAndRandomValues) {
+  expectWithin(i128((u128(1) << 127) - 1));
+  expectWithin(-i128((u128(1) << 127) - 1));
+  expectWithin(0);
+  for (int k = 0; k < 127; ++k) {
+    const u128 p = u128(1) << k;
+    for (const u128 v : {p - 1, p, p + 1}) {
+      expectWithin(i128(v));
+      expectWithin(-i128(v));
+    }
+  }
+  std::mt19937_64 rng(20261203);
+  for (int bits = 1; bits <= 127; ++bits) {
+    for (int i = 0; i < 2000; ++i) {
+      u128 v = (u128(rng()) << 64) | rng();
+      v >>= 128 - bits;
+      v |= u128(1) << (bits - 1);
+      expectWithin(i128(v));
+      expectWithin(-i128(v));
+    }
+  }
+}
+
 }  // namespace
 }  // namespace roiclip::detail
