@@ -25,14 +25,14 @@ PolygonSet buildNesting(const Arrangement& arrangement, const Contours& contours
 
 PolygonSet buildNesting(const Arrangement& arrangement, const Contours& contours, const Grid& grid,
                         NestingScratch& scratch) {
-  const auto& pieces = arrangement.pieces;
   const auto& rings = contours.rings;
+  const std::size_t pieceCount = contours.ringOfPiece.size();  // the pieces may be freed
 
   // Rings in the order of their reference pieces (each piece is the reference of one ring at
   // most): the piece below a ring's reference piece comes earlier in the sweep, so its ring has
   // been placed before.
   std::vector<int>& ringAtPiece = scratch.ringAtPiece;
-  ringAtPiece.assign(pieces.size(), -1);
+  ringAtPiece.assign(pieceCount, -1);
   std::size_t outerCount = 0;
   for (std::size_t r = 0; r < rings.size(); ++r) {
     ringAtPiece[std::size_t(rings[r].referencePiece)] = int(r);
@@ -89,7 +89,7 @@ PolygonSet buildNesting(const Arrangement& arrangement, const Contours& contours
 
   for (int r : order) {
     const TracedRing& ring = rings[r];
-    const int b = pieces[ring.referencePiece].below;
+    const int b = ring.belowPiece;
     const int below = b >= 0 ? contours.ringOfPiece[b] : -1;
     if (below < 0) {
       if (ring.hole) throw InternalError("buildNesting: hole with nothing below it");

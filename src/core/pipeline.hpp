@@ -211,7 +211,10 @@ struct TracedRing {
   /// result pieces meet the ring)
   VertexRun vertices;
   int referencePiece = -1;  ///< its lowest piece at its leftmost vertex
-  bool hole = false;        ///< true when the region inside is not filled
+  /// The nearest result piece below the reference piece's left end (EdgePiece::below), or -1:
+  /// all that nesting reads of the pieces, so they can be freed before it.
+  int belowPiece = -1;
+  bool hole = false;  ///< true when the region inside is not filled
 };
 
 /// Stage 3 (trace_contours.cpp): link result pieces into simple closed rings with the paper's
@@ -268,7 +271,8 @@ void preclipConvexReference(const Rings& rings, const std::vector<IPoint>& conve
 /// Stage 4 (nesting.cpp): give each hole its outer ring and each outer ring the hole it lies
 /// in, and emit the polygons in image coordinates with roiclip's output orientation, every
 /// coordinate correctly rounded (output.hpp). `grid` is the call's resolved grid, as for every
-/// stage (resolveGrid()).
+/// stage (resolveGrid()). Reads the arrangement's vertices, not its pieces (the rings carry
+/// what it needs of them): a caller may free the pieces first.
 PolygonSet buildNesting(const Arrangement& arrangement, const Contours& contours, const Grid& grid);
 /// The same, with its working arrays from `scratch` (a Workspace's).
 PolygonSet buildNesting(const Arrangement& arrangement, const Contours& contours, const Grid& grid,

@@ -198,6 +198,7 @@ Contours traceContours(const Arrangement& arrangement, TraceScratch& scratch) {
         const int inMin = stackE[k + (minAt + n - 1) % n];
         const int outMin = stackE[k + minAt];
         ring.referencePiece = std::min(inMin, outMin);
+        ring.belowPiece = pieces[std::size_t(ring.referencePiece)].below;
         ring.hole = sides[ring.referencePiece] == Side::Below;
         if (ring.vertices.size() < 3) throw InternalError("traceContours: degenerate ring");
         for (std::size_t i = 0; i < n; ++i)

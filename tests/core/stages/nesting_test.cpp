@@ -57,6 +57,32 @@ TEST(StageNesting, ThreeNestedSquaresNestTwoDeep) {
   EXPECT_EQ(signedArea(set.polygons[1].outer), -100.0);
 }
 
+// The pipeline frees the pieces before nesting (boolean_op.cpp): nesting reads only what the
+// rings carry of them (belowPiece), so it gives the same polygons without them.
+TEST(StageNesting, SameResultWithThePiecesFreed) {
+  const Paths nested = {{{0, 0}, {30, 0}, {30, 30}, {0, 30}},
+                        {{5, 5}, {25, 5}, {25, 25}, {5, 25}},
+                        {{10, 10}, {20, 10}, {20, 20}, {10, 20}},
+                        {{0, 0}, {12, 27}, {27, 3}}};
+  detail::Arrangement a = stages::arrange(nested, nullptr, stages::simplifyWith(FillRule::EvenOdd));
+  const detail::Contours c = detail::traceContours(a);
+  ASSERT_GE(c.rings.size(), 4u);
+  for (const detail::TracedRing& ring : c.rings) {
+    EXPECT_EQ(ring.belowPiece, a.pieces[std::size_t(ring.referencePiece)].below);
+  }
+  const PolygonSet kept = detail::buildNesting(a, c, stages::kUnitGrid);
+  std::vector<detail::EdgePiece>().swap(a.pieces);
+  std::vector<detail::Side>().swap(a.sides);
+  const PolygonSet freed = detail::buildNesting(a, c, stages::kUnitGrid);
+  ASSERT_EQ(freed.polygons.size(), kept.polygons.size());
+  for (std::size_t i = 0; i < kept.polygons.size(); ++i) {
+    EXPECT_EQ(freed.polygons[i].outer, kept.polygons[i].outer);
+    EXPECT_EQ(freed.polygons[i].holes, kept.polygons[i].holes);
+    EXPECT_EQ(freed.polygons[i].parent, kept.polygons[i].parent);
+    EXPECT_EQ(freed.polygons[i].parentHole, kept.polygons[i].parentHole);
+  }
+}
+
 TEST(StageNesting, TouchingRingsAndSiblingIslands) {
   // Two islands in one hole, and a square outside touching the outer one at a corner.
   const Paths shapes = {{{0, 0}, {30, 0}, {30, 30}, {0, 30}},
