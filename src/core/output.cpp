@@ -140,9 +140,10 @@ OutputFrame::OutputFrame(const Grid& grid) {
   // moved to the exponent.
   auto m = std::int64_t(std::ldexp(f, 53));
   e -= 53;
-  while (m != 0 && (m & 1) == 0) {
-    m >>= 1;
-    ++e;
+  if (m != 0) {  // one count, not a loop: a power-of-two scale has 52 trailing zeros
+    const int zeros = __builtin_ctzll(std::uint64_t(m));
+    m >>= zeros;
+    e += zeros;
   }
   scaleMantissa_ = m;
   scaleExponent_ = e;

@@ -82,27 +82,28 @@ class Sweep {
     nodes_.clear();
     freeNodes_.clear();
     starts_.reserve(total * 2);  // exact edges with grid ends start here too
+    // Each piece is built in place: a copy of its 240 bytes cost as much as building it.
     for (const InputEdge& e : edges) {
-      SweepPiece a;
+      const int id = int(pieces_.size());
+      SweepPiece& a = pieces_.emplace_back();
       a.left = XPoint(e.a);
       a.right = XPoint(e.b);
       a.lineA = e.a;
       a.lineB = e.b;
       a.contribution[e.operand] = e.open ? 0 : e.direction;
       a.open = e.open;
-      starts_.push_back({frame_.key(e.a), int(pieces_.size()), false});
-      starts_.push_back({frame_.key(e.b), int(pieces_.size()), true});
-      pieces_.push_back(a);
+      starts_.push_back({frame_.key(e.a), id, false});
+      starts_.push_back({frame_.key(e.b), id, true});
     }
     // Edges with off-grid ends start from the event queue; their ends are plain events.
     for (const ExactEdge& e : exactEdges) {
-      SweepPiece a;
+      const int id = int(pieces_.size());
+      SweepPiece& a = pieces_.emplace_back();
       a.left = e.left;
       a.right = e.right;
       a.lineA = e.lineA;
       a.lineB = e.lineB;
       a.contribution[e.operand] = e.direction;
-      const int id = int(pieces_.size());
       if (e.left.w == 1) {
         starts_.push_back({frame_.key(gridPoint(e.left)), id, false});
       } else {
@@ -113,7 +114,6 @@ class Sweep {
       } else {
         push(e.right, -1);
       }
-      pieces_.push_back(a);
     }
     sortStarts(starts_);
     out_.pieces.reserve(total / 4 + 16);
