@@ -15,13 +15,19 @@ namespace {
 PolygonSet resolve(const std::vector<InputEdge>& edges, const std::vector<ExactEdge>& exactEdges,
                    const BooleanSpec& spec, const Grid& grid, Workspace& ws) {
   Arrangement arrangement = splitEdges(edges, exactEdges, spec, ws);  // stages 1 and 2
-  const Contours contours = traceContours(arrangement, ws.trace);
+  Contours contours = traceContours(arrangement, ws.trace);
   // Nesting, where a large call peaks, reads only the vertices of the arrangement: the pieces
-  // (64 bytes each; 34 MB on W3-1k-evenodd) and the tracing arrays are not held through it.
-  std::vector<EdgePiece>().swap(arrangement.pieces);
-  std::vector<Side>().swap(arrangement.sides);
-  ws.trace.releaseIfAbove(std::size_t(1) << 20);
-  return buildNesting(arrangement, contours, grid, ws.nesting);
+  // (64 bytes each; 34 MB on W3-1k-evenodd) and large tracing arrays are not held through it.
+  keepIfSmall(arrangement.pieces, ws.arrangement.pieces);
+  keepIfSmall(arrangement.sides, ws.arrangement.sides);
+  ws.trace.releaseIfAbove(kKeptOutputBytes);
+  PolygonSet result = buildNesting(arrangement, contours, grid, ws.nesting);
+  keepIfSmall(arrangement.vertices, ws.arrangement.vertices);
+  keepIfSmall(arrangement.openPieces, ws.arrangement.openPieces);
+  keepIfSmall(contours.rings, ws.trace.contours.rings);
+  keepIfSmall(contours.ringOfPiece, ws.trace.contours.ringOfPiece);
+  keepIfSmall(contours.vertices, ws.trace.contours.vertices);
+  return result;
 }
 
 // Intersection with one convex ring: pre-clip the other operand to it, then resolve that alone.

@@ -116,6 +116,11 @@ class Sweep {
       }
     }
     sortStarts(starts_);
+    out_ = std::move(ws.arrangement);  // the kept capacity (resolve() gives it back)
+    out_.vertices.clear();
+    out_.pieces.clear();
+    out_.sides.clear();
+    out_.openPieces.clear();
     out_.pieces.reserve(total / 4 + 16);
     out_.vertices.reserve(total / 4 + 16);
   }

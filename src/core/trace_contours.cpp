@@ -142,7 +142,9 @@ Contours traceContours(const Arrangement& arrangement, TraceScratch& scratch) {
   std::vector<char>& used = scratch.used;
   used.assign(pieces.size(), 0);
 
-  Contours result;
+  Contours result = std::move(scratch.contours);  // the kept capacity (resolve() gives it back)
+  result.rings.clear();
+  result.vertices.clear();
   result.ringOfPiece.assign(pieces.size(), -1);
   result.sharedVertices = sharedVertices;
   // At most one vertex per piece (a ring keeps a piece's start or drops it): the array never

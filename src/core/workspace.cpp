@@ -34,6 +34,18 @@ void Workspace::recycleAll() {
   recycle(edges);
   trace.forEach([](auto& v) { recycle(v); });
   nesting.forEach([](auto& v) { recycle(v); });
+  forEachLent([](auto& v) { recycle(v); });
+}
+
+template <class F>
+void Workspace::forEachLent(F f) {
+  f(arrangement.vertices);
+  f(arrangement.pieces);
+  f(arrangement.sides);
+  f(arrangement.openPieces);
+  f(trace.contours.rings);
+  f(trace.contours.ringOfPiece);
+  f(trace.contours.vertices);
 }
 
 void Workspace::release() {
@@ -52,6 +64,7 @@ void Workspace::release() {
   std::vector<InputEdge>().swap(edges);
   trace.forEach([](auto& v) { std::remove_reference_t<decltype(v)>().swap(v); });
   nesting.forEach([](auto& v) { std::remove_reference_t<decltype(v)>().swap(v); });
+  forEachLent([](auto& v) { std::remove_reference_t<decltype(v)>().swap(v); });
 }
 
 WorkspaceLease::WorkspaceLease() { acquire(threadWorkspace()); }

@@ -33,6 +33,17 @@ void recycle(std::vector<T>& v) {
   }
 }
 
+/// The arrays of a call's arrangement and traced contours are lent from the workspace and given
+/// back when the call is done with them (keepIfSmall()), up to this size each: a small call (W4:
+/// 10,000 contours of ~20 vertices) then allocates none of them. Larger ones are freed, as
+/// nesting, where a large call peaks, should not hold them.
+constexpr std::size_t kKeptOutputBytes = std::size_t(1) << 20;
+template <class T>
+void keepIfSmall(std::vector<T>& used, std::vector<T>& kept) {
+  if (used.capacity() * sizeof(T) <= kKeptOutputBytes) kept.swap(used);
+  std::vector<T>().swap(used);
+}
+
 /// The sweep's status (the active pieces bottom to top) is an intrusive red-black tree over a
 /// pool of nodes: no allocation per insertion, and a node keeps its place in the tree when the
 /// piece it holds changes (a chain going on, two pieces crossing). The nodes are also threaded
@@ -132,6 +143,8 @@ struct ClipVertex {
 struct TraceScratch {
   std::vector<int> outFirst, outgoing, inFirst, incoming, next, pairOut, onStack, stackV, stackE;
   std::vector<char> used;
+  /// Storage lent to the traced contours of a call (not a working array: not in forEach()).
+  Contours contours;
   /// Every array, for recycleAll() / release().
   template <class F>
   void forEach(F f) {
@@ -167,6 +180,8 @@ struct NestingScratch {
 
 /// Every kept working array of the pipeline. A workspace serves one call at a time.
 struct Workspace {
+  /// Storage lent to the arrangement of a call (split_edges.cpp), given back by resolve().
+  Arrangement arrangement;
   // Sweep (split_edges.cpp).
   std::vector<SweepPiece> pieces;
   std::vector<SweepStart> starts;
@@ -194,6 +209,13 @@ struct Workspace {
   void recycleAll();
   /// Free every array.
   void release();
+
+ private:
+  /// The arrays lent to a call's arrangement and contours.
+  template <class F>
+  void forEachLent(F f);
+
+ public:
 };
 
 /// The calling thread's workspace, or `preferred`'s, for the length of one call. When that

@@ -22,12 +22,14 @@
 // unlike mallinfo2).
 namespace {
 std::atomic<std::int64_t> gLiveBytes{0};
+std::atomic<std::int64_t> gNewCalls{0};
 }  // namespace
 
 void* operator new(std::size_t size) {
   void* p = std::malloc(size == 0 ? 1 : size);
   if (p == nullptr) throw std::bad_alloc();
   gLiveBytes += std::int64_t(malloc_usable_size(p));
+  ++gNewCalls;
   return p;
 }
 void operator delete(void* p) noexcept {
@@ -138,6 +140,25 @@ TEST(ThreadBuffers, ThreadsRunningAtOnceGetTheirOwnBuffers) {
 }
 
 std::size_t heapInUse() { return std::size_t(gLiveBytes.load()); }
+
+// A small call repeated on a thread takes every array of the pipeline from the thread's
+// workspace, the arrangement's and the traced contours' too: what it allocates is its snapped
+// rings (a list and a ring per operand: 4) and its result (the polygon list and one outer ring:
+// 2).
+TEST(ThreadBuffers, ARepeatedSmallCallAllocatesOnlyItsRingsAndResult) {
+  const Paths subject = {{{10, 10}, {90, 20}, {80, 90}, {40, 60}, {15, 85}}};
+  const Paths quad = {{{30.25, 20.5}, {170.75, 35.5}, {160.5, 180.25}, {25.5, 150.75}}};
+  const Paths other = {{{0, 50}, {100, 40}, {60, 100}}};
+  for (const Paths* clipPaths : {&quad, &other}) {  // the convex path, the general path
+    const PolygonSet first = intersect(subject, *clipPaths, FillRule::EvenOdd);
+    ASSERT_EQ(first.polygons.size(), 1u);
+    ASSERT_TRUE(first.polygons[0].holes.empty());
+    const std::int64_t before = gNewCalls.load();
+    const PolygonSet again = intersect(subject, *clipPaths, FillRule::EvenOdd);
+    EXPECT_EQ(gNewCalls.load() - before, 6);
+    expectSame(again, first, "the repeated call");
+  }
+}
 
 TEST(ThreadBuffers, ReleaseFreesTheKeptArraysAndTheNextCallIsTheSame) {
   std::mt19937 rng(7);
