@@ -517,9 +517,10 @@ class Sweep {
     if (equalInBox(pa.left, pb.left)) return;
     XPoint x;
     if (!segmentCrossing(pa.lineA, pa.lineB, pb.lineA, pb.lineB, x)) return;
-    if (compareInBox(x, p) <= 0) return;
-    const int ca = compareInBox(x, pa.right);
-    const int cb = compareInBox(x, pb.right);
+    // x is a new crossing, mostly off the grid: its cached x decides first.
+    if (compareInBoxCachedFirst(x, p) <= 0) return;
+    const int ca = compareInBoxCachedFirst(x, pa.right);
+    const int cb = compareInBoxCachedFirst(x, pb.right);
     if (ca > 0 || cb > 0) return;
     if (ca == 0 || cb == 0) return;  // already an event: the end of one of them
     queueCrossing(x, a, b);

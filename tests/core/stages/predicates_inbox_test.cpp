@@ -112,5 +112,33 @@ TEST(InBoxFilters, CompareAgreesWithExactOnNearEqualPoints) {
   }
 }
 
+// compareInBoxCachedFirst() (the sweep's crossing test) asks the cached x before the
+// denominators: the same answers on the same near-equal crossings, their copies with another
+// denominator and the grid points next to them.
+TEST(InBoxFilters, CachedFirstCompareAgreesWithExact) {
+  const Crossings cr = randomCrossings(778, 3000);
+  for (std::size_t i = 0; i < cr.points.size(); ++i) {
+    const XPoint& a = cr.points[i];
+    ASSERT_EQ(compareInBoxCachedFirst(a, a), 0);
+    if (a.w < (i128(1) << 62)) {
+      XPoint scaled = a;
+      scaled.x *= 3, scaled.y *= 3, scaled.w *= 3;
+      ASSERT_EQ(compareInBoxCachedFirst(a, scaled), 0);
+    }
+    for (std::size_t j = i + 1; j < std::min(cr.points.size(), i + 6); ++j) {
+      const XPoint& b = cr.points[j];
+      ASSERT_EQ(compareInBoxCachedFirst(a, b), exactCompare(a, b)) << i << " " << j;
+      ASSERT_EQ(compareInBoxCachedFirst(b, a), exactCompare(b, a)) << i << " " << j;
+    }
+    const XPoint g(IPoint{std::int64_t(a.fx), std::int64_t(a.fy)});
+    const XPoint h(IPoint{std::int64_t(a.fx), std::int64_t(a.fy) + 1});  // same x, above
+    for (const XPoint& q : {g, h}) {
+      ASSERT_EQ(compareInBoxCachedFirst(a, q), exactCompare(a, q)) << i;
+      ASSERT_EQ(compareInBoxCachedFirst(q, a), exactCompare(q, a)) << i;
+      ASSERT_EQ(compareInBoxCachedFirst(q, g), exactCompare(q, g)) << i;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace roiclip::detail
