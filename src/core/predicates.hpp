@@ -40,13 +40,13 @@ struct IPoint {
   }
 };
 
-/// The double nearest to v (ties to even), bit for bit what the compiler's conversion
-/// (__floattidf) gives, inline. Values that fit 64 bits convert directly; otherwise |v| is
-/// shifted right to 63 bits with every dropped bit ORed into the lowest one (sticky), converted
-/// (a 63-bit value has 10 bits below a double's 53, so the sticky bit sits below the rounding
-/// bit and the one rounding of that conversion is the rounding of |v|), and scaled by 2^shift,
-/// which is exact (a power of two, the result below 2^128).
-inline double toDouble(i128 v) {
+/// |v| converted to double after a right shift to its 63 leading bits, scaled back by 2^shift
+/// (exact: a power of two, the result below 2^128). With kSticky, every dropped bit is ORed into
+/// the lowest kept one: a 63-bit value has 10 bits below a double's 53, so the sticky bit sits
+/// below the rounding bit and the one rounding of the conversion is the rounding of |v|. Without
+/// it the dropped bits are truncated, an error below 2^-62 of |v| (|v| >= 2^62 there).
+template <bool kSticky>
+inline double toDoubleShifted(i128 v) {
   if (v == i128(std::int64_t(v))) return double(std::int64_t(v));
   using u128 = unsigned __int128;
   const u128 u = v < 0 ? -u128(v) : u128(v);  // -2^127 too: unsigned negation
@@ -54,32 +54,23 @@ inline double toDouble(i128 v) {
   // u >= 2^63, so the shift is 1..65.
   const int bits = high != 0 ? 128 - __builtin_clzll(high) : 64;
   const int shift = bits - 63;
-  const bool sticky = (u & ((u128(1) << shift) - 1)) != 0;
-  const auto m = std::int64_t(std::uint64_t(u >> shift) | std::uint64_t(sticky));
+  std::uint64_t m = std::uint64_t(u >> shift);
+  if constexpr (kSticky) m |= std::uint64_t((u & ((u128(1) << shift) - 1)) != 0);
   const std::uint64_t scaleBits = std::uint64_t(1023 + shift) << 52;
   double scale;
   std::memcpy(&scale, &scaleBits, sizeof scale);
-  const double r = double(m) * scale;
+  const double r = double(std::int64_t(m)) * scale;
   return v < 0 ? -r : r;
 }
 
+/// The double nearest to v (ties to even), bit for bit what the compiler's conversion
+/// (__floattidf) gives, inline.
+inline double toDouble(i128 v) { return toDoubleShifted<true>(v); }
+
 /// A double within (2^-53 + 2^-62) |v| of v: toDouble() without the sticky bit, for the cached
 /// doubles of crossings (pointAlong()), where the 128-bit mask of the sticky bit was the largest
-/// single cost of the conversion. |v| is truncated to its 63 leading bits (an error below 2^-62
-/// of |v|, as |v| >= 2^62 there) and that value is rounded to the nearest double (2^-53).
-inline double toDoubleWithin(i128 v) {
-  if (v == i128(std::int64_t(v))) return double(std::int64_t(v));
-  using u128 = unsigned __int128;
-  const u128 u = v < 0 ? -u128(v) : u128(v);
-  const auto high = std::uint64_t(u >> 64);
-  const int bits = high != 0 ? 128 - __builtin_clzll(high) : 64;
-  const int shift = bits - 63;
-  const std::uint64_t scaleBits = std::uint64_t(1023 + shift) << 52;
-  double scale;
-  std::memcpy(&scale, &scaleBits, sizeof scale);
-  const double r = double(std::int64_t(std::uint64_t(u >> shift))) * scale;
-  return v < 0 ? -r : r;
-}
+/// single cost of the conversion (truncation 2^-62, then the rounding to double 2^-53).
+inline double toDoubleWithin(i128 v) { return toDoubleShifted<false>(v); }
 
 /// An exact point (X/W, Y/W), W > 0. Grid points have W == 1. The nearest doubles are cached
 /// for the floating-point filters.

@@ -211,11 +211,9 @@ struct Workspace {
   void release();
 
  private:
-  /// The arrays lent to a call's arrangement and contours.
+  /// The arrays lent to a call's arrangement and contours (workspace.cpp).
   template <class F>
   void forEachLent(F f);
-
- public:
 };
 
 /// The calling thread's workspace, or `preferred`'s, for the length of one call. When that

@@ -11,22 +11,12 @@
 #include <roiclip/roiclip.hpp>
 
 #include "support/oracle.hpp"
+#include "support/same_set.hpp"
 
 namespace roiclip {
 namespace {
 
 constexpr ClipOp kOps[] = {ClipOp::Intersection, ClipOp::Union, ClipOp::Difference, ClipOp::Xor};
-
-// Structural equality of two results: same polygons, rings, vertices and nesting.
-void expectSameSet(const PolygonSet& a, const PolygonSet& b, const std::string& what) {
-  ASSERT_EQ(a.polygons.size(), b.polygons.size()) << what;
-  for (std::size_t i = 0; i < a.polygons.size(); ++i) {
-    EXPECT_EQ(a.polygons[i].outer, b.polygons[i].outer) << what << " polygon " << i;
-    EXPECT_EQ(a.polygons[i].holes, b.polygons[i].holes) << what << " polygon " << i;
-    EXPECT_EQ(a.polygons[i].parent, b.polygons[i].parent) << what << " polygon " << i;
-    EXPECT_EQ(a.polygons[i].parentHole, b.polygons[i].parentHole) << what << " polygon " << i;
-  }
-}
 
 // `paths` snapped to `grid` (a resolved grid: the one clip() fits to both operands).
 Paths snapped(Paths paths, const Grid& grid) {
@@ -62,13 +52,13 @@ TEST(PolygonSetOperands, EveryOverloadEqualsClippingTheRings) {
     const ClipOp op = kOps[k];
     const std::string name = toString(op);
     for (FillRule rule : {FillRule::EvenOdd, FillRule::NonZero}) {
-      expectSameSet(clip(op, a, bowTie, rule), clip(op, aRings, bowTie, r, rule),
-                    name + " set,paths");
-      expectSameSet(clip(op, bowTie, a, rule), clip(op, bowTie, aRings, rule, r),
-                    name + " paths,set");
+      testing::expectSameSet(clip(op, a, bowTie, rule), clip(op, aRings, bowTie, r, rule),
+                             name + " set,paths");
+      testing::expectSameSet(clip(op, bowTie, a, rule), clip(op, bowTie, aRings, rule, r),
+                             name + " paths,set");
     }
     const PolygonSet both = clip(op, a, b);
-    expectSameSet(both, clip(op, aRings, bRings, r, r), name + " set,set");
+    testing::expectSameSet(both, clip(op, aRings, bRings, r, r), name + " set,set");
     areas[k] = both.area();
   }
   // The shorthands call the operation their name says (the four areas all differ here).
@@ -76,18 +66,20 @@ TEST(PolygonSetOperands, EveryOverloadEqualsClippingTheRings) {
     for (int j = i + 1; j < 4; ++j) EXPECT_NE(areas[i], areas[j]) << i << " " << j;
   }
   const FillRule eo = FillRule::EvenOdd;
-  expectSameSet(intersect(a, bowTie), clip(ClipOp::Intersection, a, bowTie, eo), "intersect");
-  expectSameSet(intersect(bowTie, a), clip(ClipOp::Intersection, bowTie, a, eo), "intersect");
-  expectSameSet(intersect(a, b), clip(ClipOp::Intersection, a, b), "intersect");
-  expectSameSet(unite(a, bowTie), clip(ClipOp::Union, a, bowTie, eo), "unite");
-  expectSameSet(unite(bowTie, a), clip(ClipOp::Union, bowTie, a, eo), "unite");
-  expectSameSet(unite(a, b), clip(ClipOp::Union, a, b), "unite");
-  expectSameSet(subtract(a, bowTie), clip(ClipOp::Difference, a, bowTie, eo), "subtract");
-  expectSameSet(subtract(bowTie, a), clip(ClipOp::Difference, bowTie, a, eo), "subtract");
-  expectSameSet(subtract(a, b), clip(ClipOp::Difference, a, b), "subtract");
-  expectSameSet(symmetricDifference(a, bowTie), clip(ClipOp::Xor, a, bowTie, eo), "xor");
-  expectSameSet(symmetricDifference(bowTie, a), clip(ClipOp::Xor, bowTie, a, eo), "xor");
-  expectSameSet(symmetricDifference(a, b), clip(ClipOp::Xor, a, b), "xor");
+  testing::expectSameSet(intersect(a, bowTie), clip(ClipOp::Intersection, a, bowTie, eo),
+                         "intersect");
+  testing::expectSameSet(intersect(bowTie, a), clip(ClipOp::Intersection, bowTie, a, eo),
+                         "intersect");
+  testing::expectSameSet(intersect(a, b), clip(ClipOp::Intersection, a, b), "intersect");
+  testing::expectSameSet(unite(a, bowTie), clip(ClipOp::Union, a, bowTie, eo), "unite");
+  testing::expectSameSet(unite(bowTie, a), clip(ClipOp::Union, bowTie, a, eo), "unite");
+  testing::expectSameSet(unite(a, b), clip(ClipOp::Union, a, b), "unite");
+  testing::expectSameSet(subtract(a, bowTie), clip(ClipOp::Difference, a, bowTie, eo), "subtract");
+  testing::expectSameSet(subtract(bowTie, a), clip(ClipOp::Difference, bowTie, a, eo), "subtract");
+  testing::expectSameSet(subtract(a, b), clip(ClipOp::Difference, a, b), "subtract");
+  testing::expectSameSet(symmetricDifference(a, bowTie), clip(ClipOp::Xor, a, bowTie, eo), "xor");
+  testing::expectSameSet(symmetricDifference(bowTie, a), clip(ClipOp::Xor, bowTie, a, eo), "xor");
+  testing::expectSameSet(symmetricDifference(a, b), clip(ClipOp::Xor, a, b), "xor");
   // The Paths operand's rule is used: the doubled bow-tie covers its lobes twice.
   EXPECT_LT(intersect(a, bowTie, FillRule::EvenOdd).area(),
             intersect(a, bowTie, FillRule::NonZero).area());

@@ -11,22 +11,12 @@
 #include <roiclip/roiclip.hpp>
 
 #include "support/oracle.hpp"
+#include "support/same_set.hpp"
 
 namespace roiclip {
 namespace {
 
 constexpr ClipOp kOps[] = {ClipOp::Intersection, ClipOp::Union, ClipOp::Difference, ClipOp::Xor};
-
-// Ring for ring, vertex for vertex.
-void expectSame(const PolygonSet& a, const PolygonSet& b, const std::string& what) {
-  ASSERT_EQ(a.polygons.size(), b.polygons.size()) << what;
-  for (std::size_t i = 0; i < a.polygons.size(); ++i) {
-    EXPECT_EQ(a.polygons[i].outer, b.polygons[i].outer) << what << ", polygon " << i;
-    EXPECT_EQ(a.polygons[i].holes, b.polygons[i].holes) << what << ", polygon " << i;
-    EXPECT_EQ(a.polygons[i].parent, b.polygons[i].parent) << what << ", polygon " << i;
-    EXPECT_EQ(a.polygons[i].parentHole, b.polygons[i].parentHole) << what << ", polygon " << i;
-  }
-}
 
 const Paths kQuad = {{{30.25, 20.5}, {170.75, 35.5}, {160.5, 180.25}, {25.5, 150.75}}};
 
@@ -63,15 +53,16 @@ TEST(PreparedRegion, GivesTheFreeFunctionsResultsOnRandomSubjects) {
                                    " subject " + std::to_string(i) + " " + toString(op);
           const PolygonSet want = clip(op, all[i], regions[r], FillRule::NonZero, rule);
           nonEmpty += want.polygons.empty() ? 0 : 1;
-          expectSame(region.clip(op, all[i], FillRule::NonZero), want, what);
+          testing::expectSameSet(region.clip(op, all[i], FillRule::NonZero), want, what);
         }
-        expectSame(region.intersect(all[i]),
-                   clip(ClipOp::Intersection, all[i], regions[r], FillRule::EvenOdd, rule),
-                   "intersect");
+        testing::expectSameSet(
+            region.intersect(all[i]),
+            clip(ClipOp::Intersection, all[i], regions[r], FillRule::EvenOdd, rule), "intersect");
         // Mixed rules: the subject's own rule is used.
-        expectSame(region.intersect(all[i], FillRule::Positive),
-                   clip(ClipOp::Intersection, all[i], regions[r], FillRule::Positive, rule),
-                   "intersect positive");
+        testing::expectSameSet(
+            region.intersect(all[i], FillRule::Positive),
+            clip(ClipOp::Intersection, all[i], regions[r], FillRule::Positive, rule),
+            "intersect positive");
       }
       EXPECT_GT(nonEmpty, all.size());  // real clipping happened
     }
@@ -89,7 +80,8 @@ TEST(PreparedRegion, ClipsPolygonSetsAndLinesAsTheFreeFunctions) {
     const PolygonSet set =
         simplify({testing::randomPolygon(rng, 30, 200)}, FillRule::EvenOdd, fixed);
     for (ClipOp op : kOps) {
-      expectSame(region.clip(op, set), clip(op, set, regionPaths, FillRule::NonZero, fixed), "set");
+      testing::expectSameSet(region.clip(op, set),
+                             clip(op, set, regionPaths, FillRule::NonZero, fixed), "set");
     }
     const PreparedRegion fitted(regionPaths, FillRule::NonZero);
     const Paths lines = {testing::randomPolygon(rng, 20, 200), {{-10, 50}, {210, 60}}};
@@ -101,9 +93,10 @@ TEST(PreparedRegion, ClipsPolygonSetsAndLinesAsTheFreeFunctions) {
   }
   const PreparedRegion fromSet(simplify(star, FillRule::NonZero, fixed), fixed);
   const Paths subject = {testing::randomPolygon(rng, 25, 100)};
-  expectSame(fromSet.intersect(subject),
-             intersect(subject, simplify(star, FillRule::NonZero, fixed), FillRule::EvenOdd, fixed),
-             "from set");
+  testing::expectSameSet(
+      fromSet.intersect(subject),
+      intersect(subject, simplify(star, FillRule::NonZero, fixed), FillRule::EvenOdd, fixed),
+      "from set");
 }
 
 // With the default fitted grid the region's grid covers its box grown twice its side on every
@@ -111,7 +104,7 @@ TEST(PreparedRegion, ClipsPolygonSetsAndLinesAsTheFreeFunctions) {
 TEST(PreparedRegion, FittedGridHandsFarSubjectsToTheFreeFunction) {
   const PreparedRegion region(kQuad);
   const Paths far = {{{0, 0}, {4e7, 0}, {4e7, 4e7}, {0, 4e7}}};
-  expectSame(region.intersect(far), intersect(far, kQuad), "far subject");
+  testing::expectSameSet(region.intersect(far), intersect(far, kQuad), "far subject");
   EXPECT_NEAR(region.intersect(far).area(), simplify(kQuad, FillRule::EvenOdd).area(), 1e-6);
 }
 
@@ -131,9 +124,10 @@ TEST(PreparedRegion, AnExceptionLeavesItReusable) {
         EXPECT_EQ(e.location().vertex, bad[0].size() / 2);
       }
       EXPECT_THROW((void)region.clipLines(bad), InvalidInputError);
-      expectSame(region.clip(ClipOp::Xor, all[i]),
-                 clip(ClipOp::Xor, all[i], regionPaths, FillRule::EvenOdd, FillRule::EvenOdd),
-                 "after a throw");
+      testing::expectSameSet(
+          region.clip(ClipOp::Xor, all[i]),
+          clip(ClipOp::Xor, all[i], regionPaths, FillRule::EvenOdd, FillRule::EvenOdd),
+          "after a throw");
     }
   }
   // A bad region is reported when the object is made, as the clip operand.
@@ -156,7 +150,7 @@ TEST(PreparedRegion, ReleaseMemoryMovesAndThreadsKeepItsResults) {
   moved.releaseMemory();
   const PreparedRegion region = std::move(moved);
   for (std::size_t i = 0; i < all.size(); ++i) {
-    expectSame(region.intersect(all[i]), want[i], "after releaseMemory and a move");
+    testing::expectSameSet(region.intersect(all[i]), want[i], "after releaseMemory and a move");
   }
   // One object, four threads at once: a call that finds the memory in use takes its own.
   std::vector<std::vector<PolygonSet>> got(4);
@@ -173,7 +167,7 @@ TEST(PreparedRegion, ReleaseMemoryMovesAndThreadsKeepItsResults) {
   for (std::thread& th : threads) th.join();
   for (std::size_t t = 0; t < got.size(); ++t) {
     for (std::size_t n = 0; n < got[t].size(); ++n) {
-      expectSame(got[t][n], want[(n % all.size() + t) % all.size()], "threads");
+      testing::expectSameSet(got[t][n], want[(n % all.size() + t) % all.size()], "threads");
     }
   }
 }

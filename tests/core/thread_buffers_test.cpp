@@ -17,6 +17,7 @@
 #include <roiclip/roiclip.hpp>
 
 #include "support/oracle.hpp"
+#include "support/same_set.hpp"
 
 // Bytes live in operator new, counted for this test binary (works under AddressSanitizer too,
 // unlike mallinfo2).
@@ -47,19 +48,6 @@ struct Job {
   Paths subject, clip;
   FillRule rule;
 };
-
-// Ring for ring, vertex for vertex.
-void expectSame(const PolygonSet& a, const PolygonSet& b, const char* what) {
-  ASSERT_EQ(a.polygons.size(), b.polygons.size()) << what;
-  for (std::size_t i = 0; i < a.polygons.size(); ++i) {
-    const Polygon& p = a.polygons[i];
-    const Polygon& q = b.polygons[i];
-    EXPECT_EQ(p.outer, q.outer) << what << ", polygon " << i;
-    EXPECT_EQ(p.holes, q.holes) << what << ", polygon " << i;
-    EXPECT_EQ(p.parent, q.parent) << what << ", polygon " << i;
-    EXPECT_EQ(p.parentHole, q.parentHole) << what << ", polygon " << i;
-  }
-}
 
 PolygonSet run(const Job& job) { return clip(job.op, job.subject, job.clip, job.rule, job.rule); }
 
@@ -96,7 +84,7 @@ TEST(ThreadBuffers, ResultsDoNotDependOnEarlierCallsOnTheThread) {
   for (int pass = 0; pass < 3; ++pass) {
     for (std::size_t k = 0; k < jobs.size(); ++k) {
       const std::size_t i = pass == 1 ? jobs.size() - 1 - k : k;
-      expectSame(run(jobs[i]), fresh[i], "same thread, after other calls");
+      testing::expectSameSet(run(jobs[i]), fresh[i], "same thread, after other calls");
     }
   }
 }
@@ -110,7 +98,7 @@ TEST(ThreadBuffers, ACallThatThrowsLeavesTheNextOneCorrect) {
   for (std::size_t i = 0; i < jobs.size(); ++i) {
     EXPECT_THROW(clip(jobs[i].op, bad, jobs[i].clip, jobs[i].rule, jobs[i].rule),
                  InvalidInputError);
-    expectSame(run(jobs[i]), fresh[i], "after a call that threw");
+    testing::expectSameSet(run(jobs[i]), fresh[i], "after a call that threw");
   }
 }
 
@@ -134,7 +122,7 @@ TEST(ThreadBuffers, ThreadsRunningAtOnceGetTheirOwnBuffers) {
   for (int t = 0; t < kThreads; ++t) {
     for (std::size_t n = 0; n < got[std::size_t(t)].size(); ++n) {
       const std::size_t i = (n % jobs.size() + std::size_t(t) * 5) % jobs.size();
-      expectSame(got[std::size_t(t)][n], fresh[i], "concurrent threads");
+      testing::expectSameSet(got[std::size_t(t)][n], fresh[i], "concurrent threads");
     }
   }
 }
@@ -156,7 +144,7 @@ TEST(ThreadBuffers, ARepeatedSmallCallAllocatesOnlyItsRingsAndResult) {
     const std::int64_t before = gNewCalls.load();
     const PolygonSet again = intersect(subject, *clipPaths, FillRule::EvenOdd);
     EXPECT_EQ(gNewCalls.load() - before, 6);
-    expectSame(again, first, "the repeated call");
+    testing::expectSameSet(again, first, "the repeated call");
   }
 }
 
@@ -173,7 +161,8 @@ TEST(ThreadBuffers, ReleaseFreesTheKeptArraysAndTheNextCallIsTheSame) {
   const std::size_t released = heapInUse();
   EXPECT_GT(kept, released + (std::size_t(4) << 20))
       << "in use after the call " << kept << " bytes, after releaseThreadBuffers " << released;
-  expectSame(intersect(chain, quad, FillRule::NonZero), first, "after releaseThreadBuffers");
+  testing::expectSameSet(intersect(chain, quad, FillRule::NonZero), first,
+                         "after releaseThreadBuffers");
 }
 
 }  // namespace

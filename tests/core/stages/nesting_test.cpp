@@ -14,6 +14,7 @@
 #include "pipeline.hpp"
 #include "stage_support.hpp"
 #include "support/oracle.hpp"
+#include "support/same_set.hpp"
 
 namespace roiclip {
 namespace {
@@ -73,14 +74,7 @@ TEST(StageNesting, SameResultWithThePiecesFreed) {
   const PolygonSet kept = detail::buildNesting(a, c, stages::kUnitGrid);
   std::vector<detail::EdgePiece>().swap(a.pieces);
   std::vector<detail::Side>().swap(a.sides);
-  const PolygonSet freed = detail::buildNesting(a, c, stages::kUnitGrid);
-  ASSERT_EQ(freed.polygons.size(), kept.polygons.size());
-  for (std::size_t i = 0; i < kept.polygons.size(); ++i) {
-    EXPECT_EQ(freed.polygons[i].outer, kept.polygons[i].outer);
-    EXPECT_EQ(freed.polygons[i].holes, kept.polygons[i].holes);
-    EXPECT_EQ(freed.polygons[i].parent, kept.polygons[i].parent);
-    EXPECT_EQ(freed.polygons[i].parentHole, kept.polygons[i].parentHole);
-  }
+  testing::expectSameSet(detail::buildNesting(a, c, stages::kUnitGrid), kept, "pieces freed");
 }
 
 TEST(StageNesting, TouchingRingsAndSiblingIslands) {
