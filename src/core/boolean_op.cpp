@@ -87,6 +87,11 @@ PolygonSet booleanGeneral(const Paths& subject, const Paths* clipPaths, const Bo
   Rings s = snapRings(subject, 0, grid);
   const Rings c = clipPaths != nullptr ? snapRings(*clipPaths, 1, grid) : Rings{};
   const WorkspaceLease ws;
+  // One contour that does not touch itself (most contours) is its own region: no sweep.
+  if (clipPaths == nullptr && spec.keepBoundary && s.size() == 1 &&
+      ringIsSimple(s[0], ws->chains)) {
+    return simpleRingRegion(s[0], spec.subjectRule, grid);
+  }
   return resolveGeneral(s, clipPaths != nullptr ? &c : nullptr, spec, grid, *ws);
 }
 

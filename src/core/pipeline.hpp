@@ -21,6 +21,7 @@ namespace roiclip::detail {
 struct Workspace;       // workspace.hpp: every array kept between calls
 struct TraceScratch;    // workspace.hpp: the working arrays of traceContours()
 struct NestingScratch;  // workspace.hpp: the working arrays of buildNesting()
+struct ChainScratch;    // workspace.hpp: the working arrays of ringIsSimple()
 
 /// Operand index: 0 = subject, 1 = clip.
 constexpr int kOperands = 2;
@@ -245,6 +246,16 @@ Contours traceContours(const Arrangement& arrangement, TraceScratch& scratch);
 /// Snap one operand's paths to the grid as closed rings of grid points (repeats and straight
 /// runs removed); rings with fewer than 2 points are dropped.
 std::vector<std::vector<IPoint>> snapRings(const Paths& paths, int operand, const Grid& grid);
+
+/// The simple-ring test (simple_ring.cpp): whether a ring from snapRings() is simple (distinct
+/// vertices, consecutive edges meet only at their shared vertex and are not collinear, no other
+/// edges meet). A sweep over the ring's lexicographically monotone chains: O(n log c) for n
+/// vertices in c chains; it stops at the first contact.
+bool ringIsSimple(const std::vector<IPoint>& ring, ChainScratch& scratch);
+/// The region a simple ring fills under `rule` (it winds +1 or -1 around its inside), exactly as
+/// stages 1 to 4 emit it: none, or one polygon, its vertices the ring's, in roiclip's output
+/// orientation, the path ending at the lexicographically smallest vertex.
+PolygonSet simpleRingRegion(const std::vector<IPoint>& ring, FillRule rule, const Grid& grid);
 
 /// The ring's orientation (+1 counter-clockwise in the raw frame, -1 clockwise) when it is a
 /// strictly convex polygon winding once, else 0.

@@ -60,6 +60,42 @@ struct StatusNode {
   StatusNode* above = nullptr;  ///< the node next above it, null at the top
 };
 
+/// A monotone chain of a ring in the simple-ring test (simple_ring.cpp): its current edge a-b
+/// (ring indices ia, ib; a < b lexicographically) and its status links.
+struct ChainNode {
+  StatusHook hook;
+  ChainNode* below = nullptr;
+  ChainNode* above = nullptr;
+  IPoint a, b;
+  int ia = 0, ib = 0;
+  int step = 0;       ///< +1 when the chain runs forward through the ring, -1 backward
+  int remaining = 0;  ///< edges after the current one
+  /// The status is built by position (insert_before), never by comparing two nodes: the
+  /// comparison the tree's type asks for.
+  struct NeverCompared {
+    bool operator()(const ChainNode& /*unused*/, const ChainNode& /*unused*/) const {
+      return false;
+    }
+  };
+};
+/// A point as a StartFrame key and the chain that reaches it.
+struct ChainKey {
+  std::uint64_t key;
+  int chain;
+};
+/// The working arrays of ringIsSimple(): the chains, their starts in order, the heap of the
+/// active chains' next vertices.
+struct ChainScratch {
+  std::vector<ChainNode> chains;
+  std::vector<ChainKey> starts, heap;
+  template <class F>
+  void forEach(F f) {
+    f(chains);
+    f(starts);
+    f(heap);
+  }
+};
+
 /// A piece of an input edge while the sweep has it (split_edges.cpp).
 struct SweepPiece {
   XPoint left, right;
@@ -197,6 +233,8 @@ struct Workspace {
   std::vector<ClipVertex> path, next;
   std::vector<ExactEdge> clipped;
   std::vector<InputEdge> edges;
+  // The simple-ring test (simple_ring.cpp).
+  ChainScratch chains;
   // Tracing (trace_contours.cpp).
   TraceScratch trace;
   // Nesting (nesting.cpp).

@@ -1,0 +1,295 @@
+// SPDX-License-Identifier: MIT
+// Stage 0, the simple-ring test: whether one snapped ring is simple, and the region it bounds.
+//
+// Most contours a vision pipeline clips do not touch themselves. For those the sweep of stage 1
+// finds nothing to split, yet it costs a tree step, a heap step and a piece per vertex. This
+// stage asks first, with a Shamos-Hoey sweep over the ring's monotone chains: a ring splits at its
+// lexicographic turning vertices into chains whose vertices increase lexicographically (x, then
+// y). A chain enters the status once, at its first vertex, and leaves once, at its last; along it
+// the sweep only moves to the next edge, which is tested against the chains next to it (no tree
+// step). The next vertex to visit comes from a binary heap over the active chains, a few hundred
+// on a pixel contour, not over the edges. Every time two current edges become neighbours in the
+// status they are tested, so the lexicographically first contact of two edges is found by the
+// time the sweep reaches it (Shamos and Hoey): the test stops there. O(n log c) for n vertices in
+// c chains, no arithmetic beyond exact int64 orientation (every point is a grid point).
+//
+// Simple here means: the ring's vertices are distinct, consecutive edges meet only at their
+// shared vertex and are not collinear (snapRings() leaves no straight-on vertex, and a spike is
+// a collinear overlap), and no other two edges meet at all.
+#include <algorithm>
+
+#include "output.hpp"
+#include "pipeline.hpp"
+#include "workspace.hpp"
+
+namespace roiclip::detail {
+namespace {
+
+// The closed segments a-b and c-d (a < b, c < d lexicographically) share a point.
+bool segmentsMeet(IPoint a, IPoint b, IPoint c, IPoint d) {
+  if (b.x < c.x || d.x < a.x) return false;
+  if (std::max(std::min(a.y, b.y), std::min(c.y, d.y)) >
+      std::min(std::max(a.y, b.y), std::max(c.y, d.y))) {
+    return false;
+  }
+  const int o1 = orientInGrid(a, b, c), o2 = orientInGrid(a, b, d);
+  if (o1 == o2 && o1 != 0) return false;
+  const int o3 = orientInGrid(c, d, a), o4 = orientInGrid(c, d, b);
+  if (o3 == o4 && o3 != 0) return false;
+  // Either the lines cross within both segments, or all four points are collinear and the
+  // boxes (tested above) overlap: then so do the segments.
+  return true;
+}
+
+// A chain's current edge passes below point q (q lies strictly to its left).
+struct EdgeBelowPoint {
+  bool operator()(const ChainNode& c, const IPoint& q) const {
+    return orientInGrid(c.a, c.b, q) > 0;
+  }
+  bool operator()(const IPoint& q, const ChainNode& c) const {
+    return orientInGrid(c.a, c.b, q) < 0;
+  }
+};
+
+class ChainSweep {
+ public:
+  ChainSweep(const std::vector<IPoint>& ring, ChainScratch& s)
+      : v_(ring), n_(int(ring.size())), s_(s), status_() {}
+  ChainSweep(const ChainSweep&) = delete;
+  ChainSweep& operator=(const ChainSweep&) = delete;
+  ~ChainSweep() { status_.clear(); }
+
+  bool run() {
+    if (n_ < 3 || !splitChains()) return false;
+    std::size_t next = 0;
+    const std::size_t c = s_.starts.size();
+    while (next < c || !s_.heap.empty()) {
+      // The earliest point: the next chain start or the heap's top (equal keys, equal points).
+      std::uint64_t key;
+      if (s_.heap.empty() || (next < c && s_.starts[next].key <= s_.heap.front().key)) {
+        key = s_.starts[next].key;
+      } else {
+        key = s_.heap.front().key;
+      }
+      int starting[2] = {-1, -1}, ending[2] = {-1, -1};
+      int startCount = 0, endCount = 0;
+      while (next < c && s_.starts[next].key == key) {
+        if (startCount == 2) return false;
+        starting[startCount++] = s_.starts[next++].chain;
+      }
+      while (!s_.heap.empty() && s_.heap.front().key == key) {
+        if (endCount == 2) return false;
+        ending[endCount++] = s_.heap.front().chain;
+        popHeap();
+      }
+      if (startCount == 2 && endCount == 0) {
+        if (!insertPair(starting[0], starting[1])) return false;
+      } else if (startCount == 0 && endCount == 1) {
+        if (!advance(ending[0])) return false;
+      } else if (startCount == 0 && endCount == 2) {
+        if (!removePair(ending[0], ending[1])) return false;
+      } else {
+        return false;  // two ring vertices at one point
+      }
+    }
+    return true;
+  }
+
+ private:
+  using Status =
+      boost::intrusive::set<ChainNode,
+                            boost::intrusive::member_hook<ChainNode, StatusHook, &ChainNode::hook>,
+                            boost::intrusive::compare<ChainNode::NeverCompared>,
+                            boost::intrusive::constant_time_size<false>>;
+
+  // Ring index after i in the chain's direction.
+  [[nodiscard]] int after(int i, int step) const {
+    i += step;
+    return i == n_ ? 0 : i < 0 ? n_ - 1 : i;
+  }
+
+  // The ring's maximal runs of lexicographically increasing or decreasing edges, each as a
+  // chain from its smallest vertex, and the order in which the chains start.
+  bool splitChains() {
+    std::vector<ChainNode>& chains = s_.chains;
+    chains.clear();
+    s_.starts.clear();
+    s_.heap.clear();
+    const auto up = [&](int i) { return v_[std::size_t(i)] < v_[std::size_t(after(i, 1))]; };
+    // A turning vertex to begin at: the first vertex where the direction changes.
+    int begin = -1;
+    for (int i = 0, prev = up(n_ - 1); i < n_; ++i) {
+      const bool u = up(i);
+      if (u != bool(prev)) {
+        begin = i;
+        break;
+      }
+      prev = u;
+    }
+    if (begin < 0) return false;  // no ring of distinct points increases all the way round
+    for (int i = begin, done = 0; done < n_;) {
+      const bool u = up(i);
+      int j = i, edges = 0;
+      while (done < n_ && up(j) == u) {
+        j = after(j, 1);
+        ++edges;
+        ++done;
+      }
+      ChainNode& chain = chains.emplace_back();
+      chain.step = u ? +1 : -1;
+      chain.ia = u ? i : j;
+      chain.remaining = edges;
+      i = j;
+    }
+    s_.starts.reserve(chains.size());
+    for (std::size_t k = 0; k < chains.size(); ++k) {
+      s_.starts.push_back({frame_.key(v_[std::size_t(chains[k].ia)]), int(k)});
+    }
+    std::sort(s_.starts.begin(), s_.starts.end(),
+              [](const ChainKey& a, const ChainKey& b) { return a.key < b.key; });
+    s_.heap.reserve(chains.size());
+    return true;
+  }
+
+  // Makes the chain's next edge current (the chain must have one).
+  void stepChain(ChainNode& chain) {
+    chain.ib = after(chain.ia, chain.step);
+    chain.a = v_[std::size_t(chain.ia)];
+    chain.b = v_[std::size_t(chain.ib)];
+    --chain.remaining;
+    pushHeap({frame_.key(chain.b), int(&chain - s_.chains.data())});
+  }
+
+  // Whether the current edges of two chains meet where a simple ring allows no contact.
+  [[nodiscard]] bool conflict(const ChainNode* p, const ChainNode* q) const {
+    if (p == nullptr || q == nullptr) return false;
+    // Consecutive ring edges (the first or last edges of two chains at their turning vertex)
+    // share that vertex; they may not overlap along it.
+    const int ep = p->step > 0 ? p->ia : p->ib, eq = q->step > 0 ? q->ia : q->ib;
+    if (after(ep, 1) == eq || after(eq, 1) == ep) {
+      const IPoint s = p->a == q->a || p->a == q->b ? p->a : p->b;
+      const IPoint u = p->a == s ? p->b : p->a, w = q->a == s ? q->b : q->a;
+      return orientInGrid(s, u, w) == 0;
+    }
+    return segmentsMeet(p->a, p->b, q->a, q->b);
+  }
+
+  // Two chains start at their shared (turning) vertex.
+  bool insertPair(int i, int j) {
+    ChainNode* lo = &s_.chains[std::size_t(i)];
+    ChainNode* hi = &s_.chains[std::size_t(j)];
+    if (lo->ia != hi->ia) return false;  // two ring vertices at one point
+    const IPoint p = v_[std::size_t(lo->ia)];
+    stepChain(*lo);
+    stepChain(*hi);
+    const int turn = orientInGrid(p, lo->b, hi->b);
+    if (turn == 0) return false;  // overlapping first edges
+    if (turn < 0) std::swap(lo, hi);
+    // The first chain whose current edge does not pass below p.
+    const auto at = status_.lower_bound(p, EdgeBelowPoint{});
+    ChainNode* above = at == status_.end() ? nullptr : &*at;
+    ChainNode* below = above != nullptr ? above->below : top_;
+    status_.insert_before(at, *lo);
+    status_.insert_before(at, *hi);
+    lo->below = below;
+    lo->above = hi;
+    hi->below = lo;
+    hi->above = above;
+    if (below != nullptr) below->above = lo;
+    (above != nullptr ? above->below : top_) = hi;
+    return !conflict(below, lo) && !conflict(hi, above);
+  }
+
+  // The chain's current edge ends at an inner vertex of the chain: its next edge becomes current.
+  bool advance(int i) {
+    ChainNode& chain = s_.chains[std::size_t(i)];
+    if (chain.remaining == 0) return false;  // a chain end without its partner
+    const IPoint before = chain.a;
+    chain.ia = chain.ib;
+    stepChain(chain);
+    if (orientInGrid(before, chain.a, chain.b) == 0) return false;  // a straight-on vertex
+    return !conflict(chain.below, &chain) && !conflict(&chain, chain.above);
+  }
+
+  // Two chains end at their shared (turning) vertex: they leave the status, next to each other.
+  bool removePair(int i, int j) {
+    ChainNode* lo = &s_.chains[std::size_t(i)];
+    ChainNode* hi = &s_.chains[std::size_t(j)];
+    if (lo->remaining != 0 || hi->remaining != 0 || lo->ib != hi->ib) return false;
+    if (lo->above != hi) std::swap(lo, hi);
+    if (lo->above != hi) return false;  // something passes between them into their end
+    ChainNode* below = lo->below;
+    ChainNode* above = hi->above;
+    if (below != nullptr) below->above = above;
+    (above != nullptr ? above->below : top_) = below;
+    status_.erase(status_.iterator_to(*lo));
+    status_.erase(status_.iterator_to(*hi));
+    return !conflict(below, above);
+  }
+
+  void pushHeap(ChainKey e) {
+    std::vector<ChainKey>& h = s_.heap;
+    std::size_t hole = h.size();
+    h.emplace_back();
+    while (hole > 0 && h[(hole - 1) / 2].key > e.key) {
+      h[hole] = h[(hole - 1) / 2];
+      hole = (hole - 1) / 2;
+    }
+    h[hole] = e;
+  }
+  void popHeap() {
+    std::vector<ChainKey>& h = s_.heap;
+    const ChainKey last = h.back();
+    h.pop_back();
+    const std::size_t n = h.size();
+    if (n == 0) return;
+    std::size_t hole = 0;
+    for (std::size_t child = 1; child < n; child = 2 * hole + 1) {
+      if (child + 1 < n && h[child + 1].key < h[child].key) ++child;
+      if (last.key <= h[child].key) break;
+      h[hole] = h[child];
+      hole = child;
+    }
+    h[hole] = last;
+  }
+
+  const std::vector<IPoint>& v_;
+  const int n_;
+  ChainScratch& s_;
+  const StartFrame frame_;
+  Status status_;
+  ChainNode* top_ = nullptr;  // the top chain of the status, null when it is empty
+};
+
+}  // namespace
+
+bool ringIsSimple(const std::vector<IPoint>& ring, ChainScratch& scratch) {
+  return ChainSweep(ring, scratch).run();
+}
+
+PolygonSet simpleRingRegion(const std::vector<IPoint>& ring, FillRule rule, const Grid& grid) {
+  const std::size_t n = ring.size();
+  const std::size_t first = std::size_t(std::min_element(ring.begin(), ring.end()) - ring.begin());
+  const std::size_t prev = (first + n - 1) % n, next = (first + 1) % n;
+  // The turn at the lexicographically smallest vertex gives the orientation of a simple ring: a
+  // counter-clockwise one winds +1 around its inside, a clockwise one -1.
+  const bool ccw = orientInGrid(ring[prev], ring[first], ring[next]) > 0;
+  PolygonSet result;
+  if (!isFilled(rule, ccw ? 1 : -1)) return result;
+  // As the general path emits it: traced counter-clockwise from the smallest vertex, output
+  // reversed (roiclip's orientation), so the path ends at the smallest vertex.
+  const OutputFrame frame(grid);
+  Path path;
+  path.reserve(n);
+  for (std::size_t k = 1; k <= n; ++k) {
+    const std::size_t i = ccw ? (first + n - k) % n : (first + k) % n;
+    const Point p = frame.point(XPoint(ring[i]));
+    if (path.empty() || p != path.back()) path.push_back(p);
+  }
+  while (path.size() > 1 && path.back() == path.front()) path.pop_back();
+  if (path.size() < 3) return result;  // distinct grid points that round to fewer doubles
+  result.polygons.emplace_back().outer = std::move(path);
+  return result;
+}
+
+}  // namespace roiclip::detail

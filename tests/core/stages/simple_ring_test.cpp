@@ -1,0 +1,256 @@
+// SPDX-License-Identifier: MIT
+// Stage 0, the simple-ring test (src/core/simple_ring.cpp): the monotone-chain sweep's verdict
+// against a brute-force test of every pair of edges, and the region of a simple ring against
+// what stages 1 to 4 make of it.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <random>
+#include <string>
+#include <vector>
+
+#include <roiclip/roiclip.hpp>
+
+#include "limit_shapes.hpp"
+#include "pipeline.hpp"
+#include "support/same_set.hpp"
+#include "workspace.hpp"
+
+namespace roiclip {
+namespace {
+
+using detail::i128;
+using detail::IPoint;
+using Ring = std::vector<IPoint>;
+
+const FillRule kRules[] = {FillRule::EvenOdd, FillRule::NonZero, FillRule::Positive,
+                           FillRule::Negative};
+
+int sign(i128 v) { return (v > 0) - (v < 0); }
+int turn(IPoint a, IPoint b, IPoint c) {
+  return sign(i128(b.x - a.x) * (c.y - a.y) - i128(b.y - a.y) * (c.x - a.x));
+}
+bool within(std::int64_t v, std::int64_t a, std::int64_t b) {
+  return std::min(a, b) <= v && v <= std::max(a, b);
+}
+// p lies on the closed segment a-b.
+bool onSegment(IPoint p, IPoint a, IPoint b) {
+  return turn(a, b, p) == 0 && within(p.x, a.x, b.x) && within(p.y, a.y, b.y);
+}
+bool closedSegmentsMeet(IPoint a, IPoint b, IPoint c, IPoint d) {
+  const int o1 = turn(a, b, c), o2 = turn(a, b, d), o3 = turn(c, d, a), o4 = turn(c, d, b);
+  if (o1 * o2 < 0 && o3 * o4 < 0) return true;
+  return onSegment(c, a, b) || onSegment(d, a, b) || onSegment(a, c, d) || onSegment(b, c, d);
+}
+
+// The definition, pair by pair: consecutive edges are not collinear, other edges never meet.
+bool bruteForceSimple(const Ring& r) {
+  const std::size_t n = r.size();
+  if (n < 3) return false;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (r[i] == r[(i + 1) % n]) return false;
+    if (turn(r[i], r[(i + 1) % n], r[(i + 2) % n]) == 0) return false;
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t j = i + 2; j < n; ++j) {
+      if (i == 0 && j == n - 1) continue;  // consecutive through the wrap
+      if (closedSegmentsMeet(r[i], r[(i + 1) % n], r[j], r[(j + 1) % n])) return false;
+    }
+  }
+  return true;
+}
+
+bool chainSweepSimple(const Ring& r) {
+  detail::ChainScratch scratch;
+  return detail::ringIsSimple(r, scratch);
+}
+
+Path toPath(const Ring& r) {
+  Path p;
+  for (const IPoint& q : r) p.emplace_back(double(q.x), double(q.y));
+  return p;
+}
+Ring toRing(const Path& p) {
+  Ring r;
+  for (const Point& q : p) r.push_back({std::int64_t(q.x), std::int64_t(q.y)});
+  return r;
+}
+
+// Stages 0 to 4 without the simple-ring shortcut.
+PolygonSet generalSimplify(const Paths& paths, FillRule rule) {
+  const Grid grid = resolveGrid(Options{}.grid, paths);
+  const detail::Rings rings = detail::snapRings(paths, 0, grid);
+  std::vector<detail::InputEdge> edges;
+  detail::appendRingEdges(rings, 0, edges);
+  detail::BooleanSpec spec;
+  spec.subjectRule = rule;
+  const detail::Arrangement a = detail::splitEdges(edges, {}, spec);
+  const detail::Contours c = detail::traceContours(a);
+  return detail::buildNesting(a, c, grid);
+}
+
+void expectVerdict(const Ring& r, bool simple, const std::string& what) {
+  ASSERT_EQ(bruteForceSimple(r), simple) << what << ": the fixture is not what it claims";
+  EXPECT_EQ(chainSweepSimple(r), simple) << what;
+  // Reversed and rotated: the same ring.
+  Ring reversed(r.rbegin(), r.rend());
+  EXPECT_EQ(chainSweepSimple(reversed), simple) << what << ", reversed";
+  Ring rotated = r;
+  std::rotate(rotated.begin(), rotated.begin() + std::ptrdiff_t(r.size() / 3), rotated.end());
+  EXPECT_EQ(chainSweepSimple(rotated), simple) << what << ", rotated";
+  for (FillRule rule : kRules) {
+    testing::expectSameSet(simplify({toPath(r)}, rule), generalSimplify({toPath(r)}, rule), what);
+  }
+}
+
+TEST(StageSimpleRing, ChainsSharingEndPoints) {
+  // A diamond: two chains start at the left vertex and end at the right one.
+  expectVerdict({{0, 0}, {4, -3}, {8, 0}, {4, 3}}, true, "diamond");
+  // Two lobes pinched at (4, 0), where two chains end and two others start: a repeated vertex.
+  expectVerdict({{0, -2}, {4, 0}, {8, -2}, {8, 2}, {4, 0}, {0, 2}}, false, "pinched lobes");
+  // The turning vertex (4, 0) of two chains lies on another chain's edge.
+  // A wedge cut into a square from its left side: its tip (8, 4), where two chains end, lies on
+  // the square's right side.
+  expectVerdict({{0, 0}, {8, 0}, {8, 8}, {0, 8}, {0, 6}, {8, 4}, {0, 2}}, false,
+                "turning vertex on an edge");
+  // Chains whose ends share x but not y: they pass each other without contact.
+  expectVerdict({{0, 0}, {4, 0}, {4, 1}, {2, 1}, {2, 3}, {4, 3}, {4, 4}, {0, 4}}, true,
+                "ends one above the other");
+}
+
+TEST(StageSimpleRing, VerticalAndHorizontalRuns) {
+  // The region under a descending staircase, every edge axis-parallel: going round, the
+  // staircase alternates up (lexicographically increasing) and left (decreasing), so every
+  // vertex of it is a turning vertex where two chains start or end.
+  Ring stairs = {{0, 0}, {100, 0}};
+  for (int k = 1; k <= 50; ++k) {
+    stairs.push_back({102 - 2 * k, 2 * k});
+    stairs.push_back({100 - 2 * k, 2 * k});
+  }
+  expectVerdict(stairs, true, "staircase");
+  // A slot cut into a square back along one vertical line: the two sides of the slot overlap.
+  expectVerdict({{0, 0}, {10, 0}, {10, 10}, {5, 10}, {5, 4}, {5, 10}, {0, 10}}, false,
+                "zero-width slot");
+  // Two rectangles joined along part of one vertical side, traced as one ring: the ring runs
+  // down and up the shared stretch.
+  expectVerdict({{0, 0}, {4, 0}, {4, 2}, {8, 2}, {8, 6}, {4, 6}, {4, 1}, {4, 8}, {0, 8}}, false,
+                "vertical overlap");
+}
+
+TEST(StageSimpleRing, CollinearChains) {
+  // A U: the tops of its two arms lie on one line, apart.
+  expectVerdict({{0, 0}, {9, 0}, {9, 6}, {6, 6}, {6, 2}, {3, 2}, {3, 6}, {0, 6}}, true,
+                "U with collinear tops");
+  // The arms' inner sides on one vertical line each, apart; two edges on the line x = 3 that do
+  // not touch (a notch below and one above).
+  expectVerdict({{0, 0},
+                 {6, 0},
+                 {6, 9},
+                 {0, 9},
+                 {0, 7},
+                 {3, 7},
+                 {3, 6},
+                 {0, 6},
+                 {0, 3},
+                 {3, 3},
+                 {3, 2},
+                 {0, 2}},
+                true, "notches on one line");
+  // Two collinear edges that overlap: a ring folded back onto itself along y = 0.
+  expectVerdict({{0, 0}, {6, 0}, {6, 3}, {3, 1}, {2, 0}, {-2, 0}, {-2, -3}}, false,
+                "collinear overlap");
+}
+
+TEST(StageSimpleRing, AChainThatCrossesManyOthers) {
+  // A comb with 200 teeth hanging down to y = 3, closed by an edge at y = 5 that crosses every
+  // tooth; and the same comb closed below the teeth (simple).
+  for (const int bottom : {5, 0}) {
+    Ring comb = {{0, bottom}, {401, bottom}, {401, 10}};
+    for (int i = 200; i >= 1; --i) {
+      comb.insert(comb.end(), {{2 * i, 10}, {2 * i, 3}, {2 * i - 1, 3}, {2 * i - 1, 10}});
+    }
+    comb.push_back({0, 10});
+    expectVerdict(comb, bottom == 0, "comb, bottom at y = " + std::to_string(bottom));
+  }
+}
+
+TEST(StageSimpleRing, ALongContourWithASingleCrossing) {
+  const testing::Crenellated shape{6250};  // 100,004 vertices
+  Ring ring = toRing(shape.path());
+  ASSERT_EQ(ring.size(), 100004U);
+  EXPECT_TRUE(chainSweepSimple(ring));
+  const Paths paths = {shape.path()};
+  const PolygonSet fast = simplify(paths, FillRule::NonZero);
+  testing::expectSameSet(fast, generalSimplify(paths, FillRule::NonZero), "crenellated");
+  ASSERT_EQ(fast.polygons.size(), 1U);
+  EXPECT_EQ(-signedArea(fast.polygons[0].outer), shape.area());
+  // One tooth near the middle of the path turned into a bow tie: its two slanted edges cross.
+  const std::size_t at = 12001;  // a bottom tooth: (a, 0), (a, -1), (b, -1), (b, 0) from here on
+  ASSERT_EQ(ring[at].y, ring[at + 1].y + 1);
+  ASSERT_EQ(ring[at + 1].y, ring[at + 2].y);
+  std::swap(ring[at + 1], ring[at + 2]);
+  EXPECT_FALSE(chainSweepSimple(ring));
+  testing::expectSameSet(simplify({toPath(ring)}, FillRule::NonZero),
+                         generalSimplify({toPath(ring)}, FillRule::NonZero), "bow tie");
+}
+
+// Small random rings on a 6 x 6 grid: repeated vertices, touching and collinear edges are
+// common, so both verdicts occur often.
+TEST(StageSimpleRing, AgreesWithBruteForceOnSmallDegenerateRings) {
+  std::mt19937 rng(20261202);
+  int simple = 0, total = 0;
+  for (int trial = 0; trial < 40000; ++trial) {
+    const int n = 3 + int(rng() % 8);
+    Ring r;
+    for (int i = 0; i < n; ++i) {
+      const IPoint p{std::int64_t(rng() % 6), std::int64_t(rng() % 6)};
+      if (r.empty() || p != r.back()) r.push_back(p);
+    }
+    while (r.size() > 1 && r.back() == r.front()) r.pop_back();
+    if (r.size() < 3) continue;
+    const bool expected = bruteForceSimple(r);
+    std::string ring;
+    for (const IPoint& p : r) ring += " (" + std::to_string(p.x) + "," + std::to_string(p.y) + ")";
+    ASSERT_EQ(chainSweepSimple(r), expected) << "trial " << trial << ":" << ring;
+    simple += expected ? 1 : 0;
+    ++total;
+  }
+  EXPECT_GT(simple, total / 50);  // both verdicts are exercised
+  EXPECT_LT(simple, total - 1000);
+}
+
+// Star-shaped rings (sorted random angles, random radii, rounded): mostly simple, sometimes a
+// rounding makes edges touch. Verdict against brute force, region against the general path.
+TEST(StageSimpleRing, StarShapedRingsMatchTheGeneralPath) {
+  std::mt19937 rng(7);
+  int simple = 0;
+  for (int trial = 0; trial < 400; ++trial) {
+    const int n = 3 + int(rng() % 120);
+    const double scale = trial % 2 == 0 ? 30.0 : 1000.0;
+    std::vector<double> angles(static_cast<std::size_t>(n));
+    for (double& a : angles) a = std::uniform_real_distribution<double>(0, 2 * M_PI)(rng);
+    std::sort(angles.begin(), angles.end());
+    Path path;
+    for (double a : angles) {
+      const double r = scale * std::uniform_real_distribution<double>(0.2, 1.0)(rng);
+      path.emplace_back(std::round(r * std::cos(a)), std::round(r * std::sin(a)));
+    }
+    if (trial % 3 == 0) std::reverse(path.begin(), path.end());
+    const Grid grid = resolveGrid(Options{}.grid, Paths{path});
+    const detail::Rings rings = detail::snapRings({path}, 0, grid);
+    if (rings.size() != 1) continue;
+    const bool expected = bruteForceSimple(rings[0]);
+    ASSERT_EQ(chainSweepSimple(rings[0]), expected) << "trial " << trial;
+    simple += expected ? 1 : 0;
+    for (FillRule rule : kRules) {
+      testing::expectSameSet(simplify({path}, rule), generalSimplify({path}, rule),
+                             "trial " + std::to_string(trial));
+    }
+  }
+  EXPECT_GT(simple, 200);
+}
+
+}  // namespace
+}  // namespace roiclip
