@@ -155,6 +155,16 @@ OutputFrame::OutputFrame(const Grid& grid) {
     }
     originUnits_[axis] = i128(o);
   }
+  constexpr i128 kOriginBound = i128(1) << 52;  // plus 2^30 grid units: below 2^53
+  static_assert(Grid::kMaxUnits <= (std::int64_t{1} << 30), "the bound above assumes 2^30");
+  if (scaleMantissa_ == 1 && -scaleExponent_ >= -1022 && 53 - scaleExponent_ <= 1023 &&
+      originUnits_[0] > -kOriginBound && originUnits_[0] < kOriginBound &&
+      originUnits_[1] > -kOriginBound && originUnits_[1] < kOriginBound) {
+    gridFast_ = true;
+    gridOrigin_[0] = std::int64_t(originUnits_[0]);
+    gridOrigin_[1] = std::int64_t(originUnits_[1]);
+    gridFactor_ = std::ldexp(1.0, -scaleExponent_);
+  }
 }
 
 double OutputFrame::coordinate(i128 units, i128 w, int axis) const {

@@ -24,6 +24,10 @@ class OutputFrame {
   [[nodiscard]] double coordinate(i128 units, i128 w, int axis) const;
   /// Both coordinates of an exact point.
   [[nodiscard]] Point point(const XPoint& p) const {
+    if (gridFast_ && p.w == 1) {  // a grid point (within the grid's range, as every vertex)
+      return {double(std::int64_t(p.x) + gridOrigin_[0]) * gridFactor_,
+              double(std::int64_t(p.y) + gridOrigin_[1]) * gridFactor_};
+    }
     return {coordinate(p.x, p.w, 0), coordinate(p.y, p.w, 1)};
   }
 
@@ -34,6 +38,13 @@ class OutputFrame {
   i128 originUnits_[2] = {0, 0};  ///< origin * scale, exact (|.| <= 2^100)
   i128 scaleMantissa_ = 1;        ///< scale = scaleMantissa_ * 2^scaleExponent_, mantissa odd
   int scaleExponent_ = 0;
+  /// Grid points the short way: on a power-of-two grid whose origin lies
+  /// within 2^52 units of 0, a grid point's units plus the origin's stay below 2^53 (exact as a
+  /// double), and times 2^-scaleExponent_ (a normal power of two whose products with such
+  /// integers stay normal) the product is exact: the correctly rounded value, in three steps.
+  bool gridFast_ = false;
+  std::int64_t gridOrigin_[2] = {0, 0};
+  double gridFactor_ = 1;
 };
 
 }  // namespace roiclip::detail

@@ -18,6 +18,8 @@
 // a collinear overlap), and no other two edges meet at all.
 #include <algorithm>
 
+#include <boost/sort/spreadsort/integer_sort.hpp>
+
 #include "output.hpp"
 #include "pipeline.hpp"
 #include "workspace.hpp"
@@ -71,6 +73,14 @@ class ChainSweep {
       } else {
         key = s_.heap.front().key;
       }
+      // Mostly one chain going on through an inner vertex: its heap entry, at the root, takes
+      // the chain's next vertex in place (no other entry equals the root unless a child does).
+      const std::vector<ChainKey>& h = s_.heap;
+      if (!h.empty() && h.front().key == key && (next == c || s_.starts[next].key != key) &&
+          (h.size() < 2 || h[1].key != key) && (h.size() < 3 || h[2].key != key)) {
+        if (!advance(h.front().chain)) return false;
+        continue;
+      }
       int starting[2] = {-1, -1}, ending[2] = {-1, -1};
       int startCount = 0, endCount = 0;
       while (next < c && s_.starts[next].key == key) {
@@ -84,8 +94,6 @@ class ChainSweep {
       }
       if (startCount == 2 && endCount == 0) {
         if (!insertPair(starting[0], starting[1])) return false;
-      } else if (startCount == 0 && endCount == 1) {
-        if (!advance(ending[0])) return false;
       } else if (startCount == 0 && endCount == 2) {
         if (!removePair(ending[0], ending[1])) return false;
       } else {
@@ -145,19 +153,22 @@ class ChainSweep {
     for (std::size_t k = 0; k < chains.size(); ++k) {
       s_.starts.push_back({frame_.key(v_[std::size_t(chains[k].ia)]), int(k)});
     }
-    std::sort(s_.starts.begin(), s_.starts.end(),
-              [](const ChainKey& a, const ChainKey& b) { return a.key < b.key; });
+    // Spreadsort on the keys: on a ragged pixel edge there is a chain every two vertices.
+    boost::sort::spreadsort::integer_sort(
+        s_.starts.begin(), s_.starts.end(),
+        [](const ChainKey& k, unsigned shift) { return k.key >> shift; },
+        [](const ChainKey& a, const ChainKey& b) { return a.key < b.key; });
     s_.heap.reserve(chains.size());
     return true;
   }
 
-  // Makes the chain's next edge current (the chain must have one).
-  void stepChain(ChainNode& chain) {
+  // Makes the chain's next edge current (the chain must have one); returns its heap entry.
+  ChainKey stepChain(ChainNode& chain) {
     chain.ib = after(chain.ia, chain.step);
     chain.a = v_[std::size_t(chain.ia)];
     chain.b = v_[std::size_t(chain.ib)];
     --chain.remaining;
-    pushHeap({frame_.key(chain.b), int(&chain - s_.chains.data())});
+    return {frame_.key(chain.b), int(&chain - s_.chains.data())};
   }
 
   // Whether the current edges of two chains meet where a simple ring allows no contact.
@@ -180,8 +191,8 @@ class ChainSweep {
     ChainNode* hi = &s_.chains[std::size_t(j)];
     if (lo->ia != hi->ia) return false;  // two ring vertices at one point
     const IPoint p = v_[std::size_t(lo->ia)];
-    stepChain(*lo);
-    stepChain(*hi);
+    pushHeap(stepChain(*lo));
+    pushHeap(stepChain(*hi));
     const int turn = orientInGrid(p, lo->b, hi->b);
     if (turn == 0) return false;  // overlapping first edges
     if (turn < 0) std::swap(lo, hi);
@@ -201,12 +212,13 @@ class ChainSweep {
   }
 
   // The chain's current edge ends at an inner vertex of the chain: its next edge becomes current.
+  // Its heap entry is the root.
   bool advance(int i) {
     ChainNode& chain = s_.chains[std::size_t(i)];
     if (chain.remaining == 0) return false;  // a chain end without its partner
     const IPoint before = chain.a;
     chain.ia = chain.ib;
-    stepChain(chain);
+    siftDown(stepChain(chain));  // the root's entry takes the chain's next vertex
     if (orientInGrid(before, chain.a, chain.b) == 0) return false;  // a straight-on vertex
     return !conflict(chain.below, &chain) && !conflict(&chain, chain.above);
   }
@@ -241,8 +253,12 @@ class ChainSweep {
     std::vector<ChainKey>& h = s_.heap;
     const ChainKey last = h.back();
     h.pop_back();
+    if (!h.empty()) siftDown(last);
+  }
+  // Puts `last` in the root's place and lets it sink.
+  void siftDown(ChainKey last) {
+    std::vector<ChainKey>& h = s_.heap;
     const std::size_t n = h.size();
-    if (n == 0) return;
     std::size_t hole = 0;
     for (std::size_t child = 1; child < n; child = 2 * hole + 1) {
       if (child + 1 < n && h[child + 1].key < h[child].key) ++child;

@@ -184,6 +184,25 @@ TEST(StageOutput, NearestDoubleByDivisionRoundsTiesAndNearTies) {
 }
 
 // The snapping rule and its inverse: grid points come back exactly.
+// OutputFrame::point() converts a grid point (W = 1) the short way where the grid allows it (a
+// power-of-two scale, an origin within 2^52 units): the same correctly rounded doubles.
+TEST(StageOutput, GridPointsOfEveryGridAreCorrectlyRounded) {
+  std::mt19937_64 rng(11);
+  std::vector<Grid> grids(std::begin(kGrids), std::end(kGrids));
+  grids.push_back(Grid::fixed(0x1p-40, {0x1p60, -0x1p61}));  // the origin beyond 2^52 units
+  grids.push_back(Grid::fixed(0x1p30, {-0.75, 3.0}));
+  for (const Grid& grid : grids) {
+    const std::int64_t range = Grid::kMaxUnits;
+    std::vector<IPoint> points = {{0, 0}, {range, -range}, {-range, range}, {1, -1}};
+    for (int i = 0; i < 2000; ++i) points.push_back(randomUnits(rng, i % 2 == 0 ? range : 1000));
+    for (const IPoint& p : points) {
+      expectCorrectlyRounded(XPoint(p), grid,
+                             "scale " + std::to_string(grid.scale) + ", units " +
+                                 std::to_string(p.x) + " " + std::to_string(p.y));
+    }
+  }
+}
+
 TEST(StageOutput, GridPointsComeBackExactly) {
   const Grid grid = Grid::fixed(0x1p24, {5087776.0, 5087776.0});
   for (const double v : {5087776.0, 5087776.0 + 0x1p-24, 5087750.125, 5087800.5}) {
