@@ -34,6 +34,14 @@ PolygonSet resolve(const std::vector<InputEdge>& edges, const std::vector<ExactE
 PolygonSet intersectConvexRing(const SnappedOperand& other, const SnappedOperand& convex,
                                const Grid& grid, const Limits& limits, Workspace& ws) {
   if (!isFilled(convex.rule, convex.convex)) return {};
+  // One contour that does not touch itself (most contours): Weiler-Atherton, no sweep, when
+  // its boundary crosses the convex ring's only transversally.
+  PolygonSet direct;
+  if (other.rings.size() == 1 && ringIsSimple(other.rings[0], ws.chains) &&
+      intersectSimpleConvex(other.rings[0], other.rule, convex.rings[0], convex.convex, grid,
+                            ws.weiler, direct)) {
+    return direct;
+  }
   BooleanSpec spec;
   spec.subjectRule = other.rule;
   spec.maxCrossings = limits.maxCrossings;

@@ -22,6 +22,7 @@ struct Workspace;       // workspace.hpp: every array kept between calls
 struct TraceScratch;    // workspace.hpp: the working arrays of traceContours()
 struct NestingScratch;  // workspace.hpp: the working arrays of buildNesting()
 struct ChainScratch;    // workspace.hpp: the working arrays of ringIsSimple()
+struct WeilerScratch;   // workspace.hpp: the working arrays of intersectSimpleConvex()
 
 /// Operand index: 0 = subject, 1 = clip.
 constexpr int kOperands = 2;
@@ -256,6 +257,16 @@ bool ringIsSimple(const std::vector<IPoint>& ring, ChainScratch& scratch);
 /// stages 1 to 4 emit it: none, or one polygon, its vertices the ring's, in roiclip's output
 /// orientation, the path ending at the lexicographically smallest vertex.
 PolygonSet simpleRingRegion(const std::vector<IPoint>& ring, FillRule rule, const Grid& grid);
+
+/// The intersection of a simple ring (ringIsSimple()), filled under `rule`, with a strictly
+/// convex ring of orientation `convexOrientation` (convexOrientation()), by Weiler-Atherton on
+/// the two boundaries (simple_convex.cpp), into `out` exactly as stages 1 to 4 emit it. Returns
+/// false, and leaves the case to the general path, unless every meeting of the boundaries is a
+/// transversal crossing away from the vertices of both (no vertex of the simple ring on a side
+/// line of the convex one, no edge of it through a corner). O(n m + k log k).
+bool intersectSimpleConvex(const std::vector<IPoint>& ring, FillRule rule,
+                           const std::vector<IPoint>& convex, int convexOrientation,
+                           const Grid& grid, WeilerScratch& scratch, PolygonSet& out);
 
 /// The ring's orientation (+1 counter-clockwise in the raw frame, -1 clockwise) when it is a
 /// strictly convex polygon winding once, else 0.

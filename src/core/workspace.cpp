@@ -33,6 +33,7 @@ void Workspace::recycleAll() {
   recycle(clipped);
   recycle(edges);
   chains.forEach([](auto& v) { recycle(v); });
+  weiler.forEach([](auto& v) { recycle(v); });
   trace.forEach([](auto& v) { recycle(v); });
   nesting.forEach([](auto& v) { recycle(v); });
   forEachLent([](auto& v) { recycle(v); });
@@ -64,6 +65,7 @@ void Workspace::release() {
   std::vector<ExactEdge>().swap(clipped);
   std::vector<InputEdge>().swap(edges);
   chains.forEach([](auto& v) { std::remove_reference_t<decltype(v)>().swap(v); });
+  weiler.forEach([](auto& v) { std::remove_reference_t<decltype(v)>().swap(v); });
   trace.forEach([](auto& v) { std::remove_reference_t<decltype(v)>().swap(v); });
   nesting.forEach([](auto& v) { std::remove_reference_t<decltype(v)>().swap(v); });
   forEachLent([](auto& v) { std::remove_reference_t<decltype(v)>().swap(v); });

@@ -96,6 +96,37 @@ struct ChainScratch {
   }
 };
 
+/// A crossing of a simple ring's boundary with a convex ring's (simple_convex.cpp).
+struct BoundaryCrossing {
+  XPoint x;
+  int edge = 0;  ///< the simple ring's edge it lies on (counter-clockwise index)
+  int side = 0;  ///< the convex ring's side it lies on (counter-clockwise index)
+  bool entering = false;
+};
+/// The working arrays of intersectSimpleConvex(): the sides of each vertex, the crossings in
+/// both orders, and the result rings, one array of points.
+struct WeilerScratch {
+  std::vector<unsigned> left;
+  std::vector<BoundaryCrossing> crossings;
+  std::vector<int> alongC, rankOnC;
+  std::vector<char> used;
+  std::vector<XPoint> points;
+  std::vector<std::size_t> ringStart;  ///< where each ring's points begin, and the end
+  std::vector<std::size_t> order, lowest;
+  template <class F>
+  void forEach(F f) {
+    f(left);
+    f(crossings);
+    f(alongC);
+    f(rankOnC);
+    f(used);
+    f(points);
+    f(ringStart);
+    f(order);
+    f(lowest);
+  }
+};
+
 /// A piece of an input edge while the sweep has it (split_edges.cpp).
 struct SweepPiece {
   XPoint left, right;
@@ -235,6 +266,8 @@ struct Workspace {
   std::vector<InputEdge> edges;
   // The simple-ring test (simple_ring.cpp).
   ChainScratch chains;
+  // The simple-ring AND convex-ring case (simple_convex.cpp).
+  WeilerScratch weiler;
   // Tracing (trace_contours.cpp).
   TraceScratch trace;
   // Nesting (nesting.cpp).

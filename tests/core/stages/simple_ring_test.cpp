@@ -15,6 +15,7 @@
 
 #include "limit_shapes.hpp"
 #include "pipeline.hpp"
+#include "stage_support.hpp"
 #include "support/same_set.hpp"
 #include "workspace.hpp"
 
@@ -229,14 +230,7 @@ TEST(StageSimpleRing, StarShapedRingsMatchTheGeneralPath) {
   for (int trial = 0; trial < 400; ++trial) {
     const int n = 3 + int(rng() % 120);
     const double scale = trial % 2 == 0 ? 30.0 : 1000.0;
-    std::vector<double> angles(static_cast<std::size_t>(n));
-    for (double& a : angles) a = std::uniform_real_distribution<double>(0, 2 * M_PI)(rng);
-    std::sort(angles.begin(), angles.end());
-    Path path;
-    for (double a : angles) {
-      const double r = scale * std::uniform_real_distribution<double>(0.2, 1.0)(rng);
-      path.emplace_back(std::round(r * std::cos(a)), std::round(r * std::sin(a)));
-    }
+    Path path = stages::starShapedRing(rng, n, {0, 0}, scale, 0.2);
     if (trial % 3 == 0) std::reverse(path.begin(), path.end());
     const Grid grid = resolveGrid(Options{}.grid, Paths{path});
     const detail::Rings rings = detail::snapRings({path}, 0, grid);

@@ -3,6 +3,9 @@
 // find points just below and above a piece.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
+#include <random>
 #include <string>
 #include <utility>
 #include <vector>
@@ -60,6 +63,23 @@ inline std::pair<Point, Point> sidePoints(const detail::Arrangement& a, const de
   const Point mid((l.fx + r.fx) / 2, (l.fy + r.fy) / 2);
   if (p.lineA.x == p.lineB.x) return {mid + Point(d, 0), mid - Point(d, 0)};
   return {mid - Point(0, d), mid + Point(0, d)};
+}
+
+/// A star-shaped ring of n vertices around `centre`: sorted random angles, radii uniform in
+/// [minFraction, 1] * radius, coordinates rounded to integers (so rounding may make it touch
+/// itself now and then).
+inline Path starShapedRing(std::mt19937& rng, int n, Point centre, double radius,
+                           double minFraction) {
+  std::vector<double> angles(static_cast<std::size_t>(n));
+  for (double& a : angles) a = std::uniform_real_distribution<double>(0, 2 * M_PI)(rng);
+  std::sort(angles.begin(), angles.end());
+  Path path;
+  for (double a : angles) {
+    const double r = radius * std::uniform_real_distribution<double>(minFraction, 1.0)(rng);
+    path.emplace_back(std::round(centre.x + r * std::cos(a)),
+                      std::round(centre.y + r * std::sin(a)));
+  }
+  return path;
 }
 
 /// Shoelace sum of a traced ring in the raw frame (grid units).

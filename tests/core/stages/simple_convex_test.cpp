@@ -1,0 +1,133 @@
+// SPDX-License-Identifier: MIT
+// The region-of-interest case without a sweep (src/core/simple_convex.cpp): a simple ring AND a
+// convex ring by Weiler-Atherton, against the general path (both operands through the sweep),
+// polygon for polygon and vertex for vertex; and the configurations it must leave to the general
+// path.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <random>
+#include <string>
+#include <vector>
+
+#include <roiclip/roiclip.hpp>
+
+#include "pipeline.hpp"
+#include "stage_support.hpp"
+#include "support/oracle.hpp"
+#include "support/same_set.hpp"
+#include "workspace.hpp"
+
+namespace roiclip {
+namespace {
+
+const FillRule kRules[] = {FillRule::EvenOdd, FillRule::NonZero, FillRule::Positive,
+                           FillRule::Negative};
+
+// Both operands through the sweep: no convex pre-clip, no Weiler-Atherton.
+PolygonSet generalIntersect(const Path& s, const Path& c, FillRule rule, FillRule clipRule) {
+  const Grid grid = resolveGrid(Options{}.grid, Paths{s}, Paths{c});
+  detail::SnappedOperand so = detail::snapOperand({s}, 0, rule, grid, false);
+  const detail::SnappedOperand co = detail::snapOperand({c}, 1, clipRule, grid, false);
+  detail::Workspace ws;
+  return detail::clipSnapped(ClipOp::Intersection, so, co, grid, Limits{}, ws);
+}
+
+// Whether Weiler-Atherton takes the case, and if so, that it gives the general path's result;
+// and that intersect() (whichever way it goes) gives it too.
+bool checkCase(const Path& s, const Path& c, FillRule rule, const std::string& what) {
+  const Grid grid = resolveGrid(Options{}.grid, Paths{s}, Paths{c});
+  const detail::Rings rs = detail::snapRings({s}, 0, grid);
+  const detail::Rings rc = detail::snapRings({c}, 1, grid);
+  // intersect() reads both operands with `rule`; Weiler-Atherton is asked only for a filled
+  // convex ring (non-zero).
+  testing::expectSameSet(intersect({s}, {c}, rule), generalIntersect(s, c, rule, rule),
+                         what + ", intersect()");
+  const PolygonSet general = generalIntersect(s, c, rule, FillRule::NonZero);
+  if (rs.size() != 1 || rc.size() != 1) return false;
+  const int orientation = detail::convexOrientation(rc[0]);
+  if (orientation == 0) return false;
+  detail::Workspace ws;
+  if (!detail::ringIsSimple(rs[0], ws.chains)) return false;
+  PolygonSet direct;
+  if (!detail::intersectSimpleConvex(rs[0], rule, rc[0], orientation, grid, ws.weiler, direct)) {
+    return false;
+  }
+  testing::expectSameSet(direct, general, what + ", Weiler-Atherton");
+  return true;
+}
+
+Path box(double x0, double y0, double x1, double y1) {
+  return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
+}
+
+TEST(StageSimpleConvex, ContainmentAndDisjointRings) {
+  const Path square = box(0, 0, 10, 10);
+  for (FillRule rule : kRules) {
+    EXPECT_TRUE(checkCase(box(2, 2, 5, 5), square, rule, "subject inside"));
+    EXPECT_TRUE(checkCase(box(-20, -20, 30, 30), square, rule, "clip inside"));
+    EXPECT_TRUE(checkCase(box(20, 20, 30, 30), square, rule, "disjoint"));
+    Path reversed = box(-20, -20, 30, 30);
+    std::reverse(reversed.begin(), reversed.end());
+    EXPECT_TRUE(checkCase(reversed, square, rule, "clip inside a clockwise subject"));
+  }
+}
+
+TEST(StageSimpleConvex, ManyCrossingsAndOneEdgeThroughTheWholeRing) {
+  const Path roi = {{930, 70}, {1640, 170}, {1560, 1000}, {900, 950}};
+  // A comb whose 40 teeth cross the ROI's top side: 80 crossings, 41 pieces. (With the teeth
+  // 5 px further right, one would pass through the corner (1640, 170).)
+  Path comb = {{800, 5}, {1700, 5}};
+  for (int i = 0; i < 40; ++i) {
+    const double x = 1695 - 20.0 * i;
+    comb.insert(comb.end(), {{x, 300.5}, {x - 10, 300.5}, {x - 10, 30}});
+  }
+  comb.push_back({800, 30});
+  for (FillRule rule : kRules) EXPECT_TRUE(checkCase(comb, roi, rule, "comb"));
+  // A thin triangle whose long edge passes through the ROI from side to side: both crossings on
+  // one edge of the subject, and the ring is left and re-entered there.
+  const Path sliver = {{100, 500}, {2000, 520}, {2000, 530}};
+  for (FillRule rule : kRules) EXPECT_TRUE(checkCase(sliver, roi, rule, "sliver"));
+  Path reversed(sliver.rbegin(), sliver.rend());
+  for (FillRule rule : kRules) EXPECT_TRUE(checkCase(reversed, roi, rule, "sliver, reversed"));
+}
+
+TEST(StageSimpleConvex, VerticesOnTheBoundaryGoToTheGeneralPath) {
+  const Path square = box(0, 0, 10, 10);
+  // A vertex on a side, a vertex on a side's line outside the side, an edge through a corner,
+  // an edge along a side: all resolved by the general path (checkCase compares intersect()).
+  EXPECT_FALSE(checkCase({{5, 0}, {12, 5}, {5, 12}}, square, FillRule::NonZero, "vertex on side"));
+  EXPECT_FALSE(checkCase({{-5, 10}, {-6, 3}, {4, 4}}, square, FillRule::NonZero, "on a line"));
+  EXPECT_FALSE(checkCase({{-2, -2}, {12, 12}, {-2, 12}}, square, FillRule::NonZero, "corner"));
+  EXPECT_FALSE(checkCase({{2, 0}, {8, 0}, {5, -5}}, square, FillRule::NonZero, "along a side"));
+}
+
+// Random simple rings against random convex rings. Coarse coordinates make vertices land on
+// side lines and edges pass through corners (the general path); fine ones mostly not.
+TEST(StageSimpleConvex, RandomRingsMatchTheGeneralPath) {
+  std::mt19937 rng(20261202);
+  int direct = 0, total = 0;
+  for (int trial = 0; trial < 1500; ++trial) {
+    const double size = trial % 3 == 0 ? 12.0 : 1000.0;
+    const Path s =
+        stages::starShapedRing(rng, 3 + int(rng() % 60), {size / 2, size / 2}, size / 2, 0.3);
+    std::vector<Point> points;
+    const int corners = 3 + int(rng() % 6);
+    for (int i = 0; i < corners; ++i) {
+      points.emplace_back(std::round(std::uniform_real_distribution<double>(0, size)(rng)),
+                          std::round(std::uniform_real_distribution<double>(0, size)(rng)));
+    }
+    const Path c = testing::convexHull({Path(points.begin(), points.end())}, trial % 2 == 1)[0];
+    if (c.size() < 3) continue;
+    const FillRule rule = kRules[trial % 4];
+    direct += checkCase(s, c, rule, "trial " + std::to_string(trial)) ? 1 : 0;
+    ++total;
+  }
+  EXPECT_GT(direct, total / 2);  // Weiler-Atherton took most cases
+  EXPECT_LT(direct, total);      // and left some to the general path
+}
+
+}  // namespace
+}  // namespace roiclip
