@@ -37,9 +37,9 @@ PolygonSet intersectConvexRing(const SnappedOperand& other, const SnappedOperand
   // One contour that does not touch itself (most contours): Weiler-Atherton, no sweep, when
   // its boundary crosses the convex ring's only transversally.
   PolygonSet direct;
-  if (other.rings.size() == 1 && ringIsSimple(other.rings[0], ws.chains) &&
+  if (other.rings.size() == 1 &&
       intersectSimpleConvex(other.rings[0], other.rule, convex.rings[0], convex.convex, grid,
-                            ws.weiler, direct)) {
+                            ws.chains, ws.weiler, direct)) {
     return direct;
   }
   BooleanSpec spec;

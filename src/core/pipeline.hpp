@@ -258,15 +258,19 @@ bool ringIsSimple(const std::vector<IPoint>& ring, ChainScratch& scratch);
 /// orientation, the path ending at the lexicographically smallest vertex.
 PolygonSet simpleRingRegion(const std::vector<IPoint>& ring, FillRule rule, const Grid& grid);
 
-/// The intersection of a simple ring (ringIsSimple()), filled under `rule`, with a strictly
+/// The intersection of a ring, filled under `rule`, with a strictly
 /// convex ring of orientation `convexOrientation` (convexOrientation()), by Weiler-Atherton on
 /// the two boundaries (simple_convex.cpp), into `out` exactly as stages 1 to 4 emit it. Returns
-/// false, and leaves the case to the general path, unless every meeting of the boundaries is a
-/// transversal crossing away from the vertices of both (no vertex of the simple ring on a side
-/// line of the convex one, no edge of it through a corner). O(n m + k log k).
+/// false, and leaves the case to the general path, unless the ring is simple (ringIsSimple(),
+/// asked after the cheaper test of its vertices against the convex ring) and every meeting of
+/// the boundaries is a
+/// transversal crossing away from the vertices of both (no vertex of the simple ring on the
+/// convex one's boundary, no edge of it along a side's line or with its line through a corner).
+/// O(n m + k log k).
 bool intersectSimpleConvex(const std::vector<IPoint>& ring, FillRule rule,
                            const std::vector<IPoint>& convex, int convexOrientation,
-                           const Grid& grid, WeilerScratch& scratch, PolygonSet& out);
+                           const Grid& grid, ChainScratch& chains, WeilerScratch& scratch,
+                           PolygonSet& out);
 
 /// The ring's orientation (+1 counter-clockwise in the raw frame, -1 clockwise) when it is a
 /// strictly convex polygon winding once, else 0.

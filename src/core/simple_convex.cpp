@@ -2,11 +2,11 @@
 // The region-of-interest case without a sweep: a simple ring (ringIsSimple()) intersected with a
 // strictly convex ring, by Weiler-Atherton on the two boundaries.
 //
-// When no vertex of either ring lies on a side line of the convex ring C and no edge of the
-// simple ring S passes through a vertex of C, every meeting of the two boundaries is a
-// transversal crossing at a point of its own (S does not touch itself). Along S, the crossings
-// alternate between entering and leaving C; along the boundary of C, between leaving and
-// entering. Both rings taken counter-clockwise, the boundary of S AND C runs along S from each
+// When no vertex of the simple ring S lies on the boundary of the convex ring C, no edge of S
+// runs along a side line of C and none passes through a vertex of C, every meeting of the two
+// boundaries is a transversal crossing at a point of its own (S does not touch itself). Along S,
+// the crossings alternate between entering and leaving C; along the boundary of C, between leaving
+// and entering. Both rings taken counter-clockwise, the boundary of S AND C runs along S from each
 // entering crossing to the next crossing (a leaving one), then along C to the next crossing on
 // C's boundary (an entering one), and so on round. Each such ring is simple and the rings are
 // disjoint; S AND C has no holes (a hole would be a bounded part of the complement of S or of
@@ -92,36 +92,48 @@ bool insideRing(const CcwRing& s, IPoint p) {
 
 bool intersectSimpleConvex(const std::vector<IPoint>& ring, FillRule rule,
                            const std::vector<IPoint>& convex, int convexOrientation,
-                           const Grid& grid, WeilerScratch& w, PolygonSet& out) {
+                           const Grid& grid, ChainScratch& chains, WeilerScratch& w,
+                           PolygonSet& out) {
   out = {};
   const int n = int(ring.size()), m = int(convex.size());
-  if (m > 30) return false;
+  if (n < 3 || m > 30) return false;
+  // The orientation, if S is simple (asked below, after the cheaper test of its vertices).
   const std::size_t low = std::size_t(std::min_element(ring.begin(), ring.end()) - ring.begin());
   const bool ccw = orientInGrid(ring[(low + ring.size() - 1) % ring.size()], ring[low],
                                 ring[(low + 1) % ring.size()]) > 0;
-  if (!isFilled(rule, ccw ? 1 : -1)) return true;  // S fills nothing under its rule
   const CcwRing s{&ring, !ccw}, c{&convex, convexOrientation < 0};
 
-  // Which side of each side line of C every vertex of S lies on (bit j: left of side j).
+  // Which side of each side line of C every vertex of S lies on: bit j of left[k] when strictly
+  // left of side j, bit j of onLine[k] when on its line. A vertex on a side line outside C (on
+  // the line's extension: strictly right of another side) counts as right of it; an edge from
+  // it crosses that line only there, outside the side.
   std::vector<unsigned>& left = w.left;
+  std::vector<unsigned>& onLine = w.onLine;
   left.resize(std::size_t(n));
+  onLine.resize(std::size_t(n));
   const unsigned all = (1U << m) - 1;
   for (int k = 0; k < n; ++k) {
     const IPoint p = s[k];
-    unsigned bits = 0;
+    unsigned bits = 0, zeros = 0;
     for (int j = 0; j < m; ++j) {
       const int o = orientInGrid(c[j], c[(j + 1) % m], p);
-      if (o == 0) return false;  // on a side line: the general path
       bits |= unsigned(o > 0) << j;
+      zeros |= unsigned(o == 0) << j;
     }
+    if (zeros != 0 && (bits | zeros) == all) return false;  // on C's boundary: the general path
     left[std::size_t(k)] = bits;
+    onLine[std::size_t(k)] = zeros;
   }
+  if (!ringIsSimple(ring, chains)) return false;
+  if (!isFilled(rule, ccw ? 1 : -1)) return true;  // S fills nothing under its rule
 
   std::vector<Crossing>& crossings = w.crossings;
   crossings.clear();
   for (int k = 0; k < n; ++k) {
-    const unsigned lp = left[std::size_t(k)], lq = left[std::size_t((k + 1) % n)];
+    const std::size_t kq = std::size_t((k + 1) % n);
+    const unsigned lp = left[std::size_t(k)], lq = left[kq];
     if (lp == all && lq == all) continue;  // both ends in C: the edge lies in C
+    if ((onLine[std::size_t(k)] & onLine[kq]) != 0) return false;  // along a side's line
     const IPoint p = s[k], q = s[(k + 1) % n];
     const std::size_t before = crossings.size();
     for (unsigned changed = lp ^ lq; changed != 0; changed &= changed - 1) {

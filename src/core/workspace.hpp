@@ -106,7 +106,7 @@ struct BoundaryCrossing {
 /// The working arrays of intersectSimpleConvex(): the sides of each vertex, the crossings in
 /// both orders, and the result rings, one array of points.
 struct WeilerScratch {
-  std::vector<unsigned> left;
+  std::vector<unsigned> left, onLine;
   std::vector<BoundaryCrossing> crossings;
   std::vector<int> alongC, rankOnC;
   std::vector<char> used;
@@ -116,6 +116,7 @@ struct WeilerScratch {
   template <class F>
   void forEach(F f) {
     f(left);
+    f(onLine);
     f(crossings);
     f(alongC);
     f(rankOnC);
