@@ -112,13 +112,21 @@ bool intersectSimpleConvex(const std::vector<IPoint>& ring, FillRule rule,
   left.resize(std::size_t(n));
   onLine.resize(std::size_t(n));
   const unsigned all = (1U << m) - 1;
+  // Each side as its start and direction (orientInGrid() with the differences taken once).
+  IPoint sideStart[30], sideDir[30];
+  for (int j = 0; j < m; ++j) {
+    sideStart[j] = c[j];
+    const IPoint b = c[(j + 1) % m];
+    sideDir[j] = {b.x - sideStart[j].x, b.y - sideStart[j].y};
+  }
   for (int k = 0; k < n; ++k) {
-    const IPoint p = s[k];
+    const IPoint p = ring[std::size_t(ccw ? k : n - 1 - k)];
     unsigned bits = 0, zeros = 0;
     for (int j = 0; j < m; ++j) {
-      const int o = orientInGrid(c[j], c[(j + 1) % m], p);
-      bits |= unsigned(o > 0) << j;
-      zeros |= unsigned(o == 0) << j;
+      const std::int64_t l = sideDir[j].x * (p.y - sideStart[j].y);
+      const std::int64_t r = sideDir[j].y * (p.x - sideStart[j].x);
+      bits |= unsigned(l > r) << j;
+      zeros |= unsigned(l == r) << j;
     }
     if (zeros != 0 && (bits | zeros) == all) return false;  // on C's boundary: the general path
     left[std::size_t(k)] = bits;
