@@ -96,7 +96,7 @@ bool intersectSimpleConvex(const std::vector<IPoint>& ring, FillRule rule,
                            PolygonSet& out) {
   out = {};
   const int n = int(ring.size()), m = int(convex.size());
-  if (n < 3 || m > 30) return false;
+  if (n < 3 || m > 30 || !turnsOnce(ring)) return false;
   // The orientation, if S is simple (asked below, after the cheaper test of its vertices).
   const std::size_t low = std::size_t(std::min_element(ring.begin(), ring.end()) - ring.begin());
   const bool ccw = orientInGrid(ring[(low + ring.size() - 1) % ring.size()], ring[low],
@@ -132,7 +132,7 @@ bool intersectSimpleConvex(const std::vector<IPoint>& ring, FillRule rule,
     left[std::size_t(k)] = bits;
     onLine[std::size_t(k)] = zeros;
   }
-  if (!ringIsSimple(ring, chains)) return false;
+  if (!ringIsSimple(ring, chains, /*turnsChecked=*/true)) return false;
   if (!isFilled(rule, ccw ? 1 : -1)) return true;  // S fills nothing under its rule
 
   std::vector<Crossing>& crossings = w.crossings;

@@ -279,8 +279,35 @@ class ChainSweep {
 
 }  // namespace
 
-bool ringIsSimple(const std::vector<IPoint>& ring, ChainScratch& scratch) {
-  return ChainSweep(ring, scratch).run();
+bool turnsOnce(const std::vector<IPoint>& ring) {
+  const std::size_t n = ring.size();
+  if (n < 3) return false;
+  // Counts the edge direction passing angle 0 (the positive x axis): counter-clockwise when it
+  // moves from the lower half-turn [pi, 2 pi) to the upper one [0, pi) turning left, clockwise
+  // when it moves from the upper to the lower turning right. Each turn is less than a half turn
+  // in magnitude, so it passes 0 at most once; a spike (a half turn) is not simple anyway.
+  const auto direction = [&](std::size_t i) {
+    const IPoint a = ring[i], b = ring[i + 1 == n ? 0 : i + 1];
+    return IPoint{b.x - a.x, b.y - a.y};
+  };
+  const auto lower = [](IPoint d) { return d.y < 0 || (d.y == 0 && d.x < 0); };
+  IPoint d = direction(n - 1);
+  long long turns = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const IPoint e = direction(i);
+    // The sign of d x e, exact for grid points (|differences| <= 2^31: products below 2^62).
+    const std::int64_t l = d.x * e.y, r = d.y * e.x;
+    if (l == r && d.x * e.x < -(d.y * e.y)) return false;  // a spike (no sum: it could overflow)
+    const bool fromLower = lower(d), toLower = lower(e);
+    turns += (fromLower && !toLower && l > r) ? 1 : 0;
+    turns -= (!fromLower && toLower && l < r) ? 1 : 0;
+    d = e;
+  }
+  return turns == 1 || turns == -1;
+}
+
+bool ringIsSimple(const std::vector<IPoint>& ring, ChainScratch& scratch, bool turnsChecked) {
+  return (turnsChecked || turnsOnce(ring)) && ChainSweep(ring, scratch).run();
 }
 
 PolygonSet simpleRingRegion(const std::vector<IPoint>& ring, FillRule rule, const Grid& grid) {

@@ -197,6 +197,23 @@ TEST(StageSimpleRing, ALongContourWithASingleCrossing) {
                          generalSimplify({toPath(ring)}, FillRule::NonZero), "bow tie");
 }
 
+TEST(StageSimpleRing, RotationIndexRejectsMostSelfCrossingRings) {
+  EXPECT_TRUE(detail::turnsOnce({{0, 0}, {4, 0}, {4, 4}, {0, 4}}));
+  EXPECT_TRUE(detail::turnsOnce({{0, 0}, {0, 4}, {4, 4}, {4, 0}}));   // clockwise: -1
+  EXPECT_FALSE(detail::turnsOnce({{0, 0}, {4, 4}, {4, 0}, {0, 4}}));  // figure eight: 0
+  // A square whose top side makes a counter-clockwise loop (crossing itself at (8, 10)): it
+  // turns twice.
+  EXPECT_FALSE(
+      detail::turnsOnce({{0, 0}, {10, 0}, {10, 10}, {5, 10}, {5, 7}, {8, 7}, {8, 12}, {0, 12}}));
+  EXPECT_FALSE(detail::turnsOnce({{0, 0}, {10, 0}, {5, 0}, {5, 5}}));  // a spike
+  // The pentagram: turns twice.
+  EXPECT_FALSE(detail::turnsOnce({{0, 10}, {6, -8}, {-10, 3}, {10, 3}, {-6, -8}}));
+  // Touching itself at a vertex keeps the rotation index 1: only the chain sweep sees it.
+  const Ring pinched = {{0, -2}, {4, 0}, {8, -2}, {8, 2}, {4, 0}, {0, 2}};
+  EXPECT_TRUE(detail::turnsOnce(pinched));
+  EXPECT_FALSE(chainSweepSimple(pinched));
+}
+
 // Small random rings on a 6 x 6 grid: repeated vertices, touching and collinear edges are
 // common, so both verdicts occur often.
 TEST(StageSimpleRing, AgreesWithBruteForceOnSmallDegenerateRings) {
@@ -212,6 +229,7 @@ TEST(StageSimpleRing, AgreesWithBruteForceOnSmallDegenerateRings) {
     while (r.size() > 1 && r.back() == r.front()) r.pop_back();
     if (r.size() < 3) continue;
     const bool expected = bruteForceSimple(r);
+    if (expected) ASSERT_TRUE(detail::turnsOnce(r)) << "trial " << trial;  // Hopf: necessary
     std::string ring;
     for (const IPoint& p : r) ring += " (" + std::to_string(p.x) + "," + std::to_string(p.y) + ")";
     ASSERT_EQ(chainSweepSimple(r), expected) << "trial " << trial << ":" << ring;
