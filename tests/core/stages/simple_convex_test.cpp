@@ -26,15 +26,6 @@ namespace {
 const FillRule kRules[] = {FillRule::EvenOdd, FillRule::NonZero, FillRule::Positive,
                            FillRule::Negative};
 
-// Both operands through the sweep: no convex pre-clip, no Weiler-Atherton.
-PolygonSet generalIntersect(const Path& s, const Path& c, FillRule rule, FillRule clipRule) {
-  const Grid grid = resolveGrid(Options{}.grid, Paths{s}, Paths{c});
-  detail::SnappedOperand so = detail::snapOperand({s}, 0, rule, grid, false);
-  const detail::SnappedOperand co = detail::snapOperand({c}, 1, clipRule, grid, false);
-  detail::Workspace ws;
-  return detail::clipSnapped(ClipOp::Intersection, so, co, grid, Limits{}, ws);
-}
-
 // Whether Weiler-Atherton takes the case, and if so, that it gives the general path's result;
 // and that intersect() (whichever way it goes) gives it too.
 bool checkCase(const Path& s, const Path& c, FillRule rule, const std::string& what) {
@@ -43,9 +34,9 @@ bool checkCase(const Path& s, const Path& c, FillRule rule, const std::string& w
   const detail::Rings rc = detail::snapRings({c}, 1, grid);
   // intersect() reads both operands with `rule`; Weiler-Atherton is asked only for a filled
   // convex ring (non-zero).
-  testing::expectSameSet(intersect({s}, {c}, rule), generalIntersect(s, c, rule, rule),
+  testing::expectSameSet(intersect({s}, {c}, rule), stages::generalIntersect({s}, {c}, rule, rule),
                          what + ", intersect()");
-  const PolygonSet general = generalIntersect(s, c, rule, FillRule::NonZero);
+  const PolygonSet general = stages::generalIntersect({s}, {c}, rule, FillRule::NonZero);
   if (rs.size() != 1 || rc.size() != 1) return false;
   const int orientation = detail::convexOrientation(rc[0]);
   if (orientation == 0) return false;

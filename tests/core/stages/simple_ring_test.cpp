@@ -79,19 +79,6 @@ Ring toRing(const Path& p) {
   return r;
 }
 
-// Stages 0 to 4 without the simple-ring shortcut.
-PolygonSet generalSimplify(const Paths& paths, FillRule rule) {
-  const Grid grid = resolveGrid(Options{}.grid, paths);
-  const detail::Rings rings = detail::snapRings(paths, 0, grid);
-  std::vector<detail::InputEdge> edges;
-  detail::appendRingEdges(rings, 0, edges);
-  detail::BooleanSpec spec;
-  spec.subjectRule = rule;
-  const detail::Arrangement a = detail::splitEdges(edges, {}, spec);
-  const detail::Contours c = detail::traceContours(a);
-  return detail::buildNesting(a, c, grid);
-}
-
 void expectVerdict(const Ring& r, bool simple, const std::string& what) {
   ASSERT_EQ(bruteForceSimple(r), simple) << what << ": the fixture is not what it claims";
   EXPECT_EQ(chainSweepSimple(r), simple) << what;
@@ -102,7 +89,8 @@ void expectVerdict(const Ring& r, bool simple, const std::string& what) {
   std::rotate(rotated.begin(), rotated.begin() + std::ptrdiff_t(r.size() / 3), rotated.end());
   EXPECT_EQ(chainSweepSimple(rotated), simple) << what << ", rotated";
   for (FillRule rule : kRules) {
-    testing::expectSameSet(simplify({toPath(r)}, rule), generalSimplify({toPath(r)}, rule), what);
+    testing::expectSameSet(simplify({toPath(r)}, rule), stages::generalSimplify({toPath(r)}, rule),
+                           what);
   }
 }
 
@@ -184,7 +172,7 @@ TEST(StageSimpleRing, ALongContourWithASingleCrossing) {
   EXPECT_TRUE(chainSweepSimple(ring));
   const Paths paths = {shape.path()};
   const PolygonSet fast = simplify(paths, FillRule::NonZero);
-  testing::expectSameSet(fast, generalSimplify(paths, FillRule::NonZero), "crenellated");
+  testing::expectSameSet(fast, stages::generalSimplify(paths, FillRule::NonZero), "crenellated");
   ASSERT_EQ(fast.polygons.size(), 1U);
   EXPECT_EQ(-signedArea(fast.polygons[0].outer), shape.area());
   // One tooth near the middle of the path turned into a bow tie: its two slanted edges cross.
@@ -194,7 +182,7 @@ TEST(StageSimpleRing, ALongContourWithASingleCrossing) {
   std::swap(ring[at + 1], ring[at + 2]);
   EXPECT_FALSE(chainSweepSimple(ring));
   testing::expectSameSet(simplify({toPath(ring)}, FillRule::NonZero),
-                         generalSimplify({toPath(ring)}, FillRule::NonZero), "bow tie");
+                         stages::generalSimplify({toPath(ring)}, FillRule::NonZero), "bow tie");
 }
 
 TEST(StageSimpleRing, RotationIndexRejectsMostSelfCrossingRings) {
@@ -257,7 +245,7 @@ TEST(StageSimpleRing, StarShapedRingsMatchTheGeneralPath) {
     ASSERT_EQ(chainSweepSimple(rings[0]), expected) << "trial " << trial;
     simple += expected ? 1 : 0;
     for (FillRule rule : kRules) {
-      testing::expectSameSet(simplify({path}, rule), generalSimplify({path}, rule),
+      testing::expectSameSet(simplify({path}, rule), stages::generalSimplify({path}, rule),
                              "trial " + std::to_string(trial));
     }
   }

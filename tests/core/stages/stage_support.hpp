@@ -13,6 +13,7 @@
 #include <roiclip/roiclip.hpp>
 
 #include "pipeline.hpp"
+#include "workspace.hpp"
 
 namespace roiclip::stages {
 
@@ -80,6 +81,29 @@ inline Path starShapedRing(std::mt19937& rng, int n, Point centre, double radius
                       std::round(centre.y + r * std::sin(a)));
   }
   return path;
+}
+
+/// simplify() on stages 0 to 4, without the simple-ring shortcut.
+inline PolygonSet generalSimplify(const Paths& paths, FillRule rule) {
+  const Grid grid = resolveGrid(Options{}.grid, paths);
+  const detail::Rings rings = detail::snapRings(paths, 0, grid);
+  std::vector<detail::InputEdge> edges;
+  detail::appendRingEdges(rings, 0, edges);
+  detail::BooleanSpec spec;
+  spec.subjectRule = rule;
+  const detail::Arrangement a = detail::splitEdges(edges, {}, spec);
+  const detail::Contours c = detail::traceContours(a);
+  return detail::buildNesting(a, c, grid);
+}
+
+/// intersect() with both operands through the sweep: no convex pre-clip, no Weiler-Atherton.
+inline PolygonSet generalIntersect(const Paths& s, const Paths& c, FillRule rule,
+                                   FillRule clipRule) {
+  const Grid grid = resolveGrid(Options{}.grid, s, c);
+  detail::SnappedOperand so = detail::snapOperand(s, 0, rule, grid, false);
+  const detail::SnappedOperand co = detail::snapOperand(c, 1, clipRule, grid, false);
+  detail::Workspace ws;
+  return detail::clipSnapped(ClipOp::Intersection, so, co, grid, Limits{}, ws);
 }
 
 /// Shoelace sum of a traced ring in the raw frame (grid units).
