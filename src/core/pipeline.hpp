@@ -268,9 +268,10 @@ PolygonSet simpleRingRegion(const std::vector<IPoint>& ring, FillRule rule, cons
 /// The intersection of a ring, filled under `rule`, with a strictly
 /// convex ring of orientation `convexOrientation` (convexOrientation()), by Weiler-Atherton on
 /// the two boundaries (simple_convex.cpp), into `out` exactly as stages 1 to 4 emit it. Returns
-/// false, and leaves the case to the general path, unless the ring is simple (ringIsSimple(),
-/// asked after the cheaper test of its vertices against the convex ring) and every meeting of
-/// the boundaries is a
+/// true with an empty result for any ring (simple or not) with no vertex strictly inside some
+/// side line of the convex ring. Otherwise returns false, and leaves the case to the general
+/// path, unless the ring is simple (ringIsSimple(), asked after the cheaper test of its
+/// vertices against the convex ring) and every meeting of the boundaries is a
 /// transversal crossing away from the vertices of both (no vertex of the simple ring on the
 /// convex one's boundary, no edge of it along a side's line or with its line through a corner).
 /// O(n m + k log k).

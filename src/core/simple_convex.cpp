@@ -11,8 +11,9 @@
 // C's boundary (an entering one), and so on round. Each such ring is simple and the rings are
 // disjoint; S AND C has no holes (a hole would be a bounded part of the complement of S or of
 // C, and neither has one). Without crossings, S AND C is S, C or empty. O(n m + k log k) for n
-// vertices of S, m of C and k crossings. Any other configuration (a vertex on a boundary, an
-// edge through a corner) returns false: the general path resolves it.
+// vertices of S, m of C and k crossings. A ring, simple or not, that lies on the outer side of
+// one side line of C gives nothing. Any other configuration (a ring that is not simple, a vertex
+// on C's boundary, an edge through a corner) returns false: the general path resolves it.
 #include <algorithm>
 
 #include "output.hpp"
@@ -96,7 +97,7 @@ bool intersectSimpleConvex(const std::vector<IPoint>& ring, FillRule rule,
                            PolygonSet& out) {
   out = {};
   const int n = int(ring.size()), m = int(convex.size());
-  if (n < 3 || m > 30 || !turnsOnce(ring)) return false;
+  if (n < 3 || m > 30) return false;
   // The orientation, if S is simple (asked below, after the cheaper test of its vertices).
   const std::size_t low = std::size_t(std::min_element(ring.begin(), ring.end()) - ring.begin());
   const bool ccw = orientInGrid(ring[(low + ring.size() - 1) % ring.size()], ring[low],
@@ -119,6 +120,7 @@ bool intersectSimpleConvex(const std::vector<IPoint>& ring, FillRule rule,
     const IPoint b = c[(j + 1) % m];
     sideDir[j] = {b.x - sideStart[j].x, b.y - sideStart[j].y};
   }
+  unsigned anyLeft = 0;  // the sides some vertex lies strictly left of
   for (int k = 0; k < n; ++k) {
     const IPoint p = ring[std::size_t(ccw ? k : n - 1 - k)];
     unsigned bits = 0, zeros = 0;
@@ -131,8 +133,12 @@ bool intersectSimpleConvex(const std::vector<IPoint>& ring, FillRule rule,
     if (zeros != 0 && (bits | zeros) == all) return false;  // on C's boundary: the general path
     left[std::size_t(k)] = bits;
     onLine[std::size_t(k)] = zeros;
+    anyLeft |= bits;
   }
-  if (!ringIsSimple(ring, chains, /*turnsChecked=*/true)) return false;
+  // No vertex strictly left of some side: the ring lies in that side's closed outer half-plane,
+  // and so does every point it winds around, simple or not. Nothing of it is in C.
+  if (anyLeft != all) return true;
+  if (!ringIsSimple(ring, chains)) return false;
   if (!isFilled(rule, ccw ? 1 : -1)) return true;  // S fills nothing under its rule
 
   std::vector<Crossing>& crossings = w.crossings;
