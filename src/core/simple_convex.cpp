@@ -97,7 +97,9 @@ bool intersectSimpleConvex(const std::vector<IPoint>& ring, FillRule rule,
                            PolygonSet& out) {
   out = {};
   const int n = int(ring.size()), m = int(convex.size());
-  if (n < 3 || m > 30) return false;
+  // A ring that crosses itself with a loop (rotation index not +-1) leaves at once, before the
+  // vertex test; one outside C does after it, and the rotation index costs it less.
+  if (n < 3 || m > 30 || !turnsOnce(ring)) return false;
   // The orientation, if S is simple (asked below, after the cheaper test of its vertices).
   const std::size_t low = std::size_t(std::min_element(ring.begin(), ring.end()) - ring.begin());
   const bool ccw = orientInGrid(ring[(low + ring.size() - 1) % ring.size()], ring[low],
@@ -138,7 +140,7 @@ bool intersectSimpleConvex(const std::vector<IPoint>& ring, FillRule rule,
   // No vertex strictly left of some side: the ring lies in that side's closed outer half-plane,
   // and so does every point it winds around, simple or not. Nothing of it is in C.
   if (anyLeft != all) return true;
-  if (!ringIsSimple(ring, chains)) return false;
+  if (!ringIsSimple(ring, chains, /*turnsChecked=*/true)) return false;
   if (!isFilled(rule, ccw ? 1 : -1)) return true;  // S fills nothing under its rule
 
   std::vector<Crossing>& crossings = w.crossings;

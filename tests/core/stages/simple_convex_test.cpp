@@ -91,13 +91,19 @@ TEST(StageSimpleConvex, ManyCrossingsAndOneEdgeThroughTheWholeRing) {
 TEST(StageSimpleConvex, ARingOutsideOneSideLineGivesNothingSimpleOrNot) {
   const Path square = box(0, 0, 10, 10);
   for (FillRule rule : kRules) {
-    // A bow tie right of x = 10 with two vertices on that line (above the square), and one
-    // wholly below y = 0.
-    EXPECT_TRUE(checkCase({{10, 12}, {14, 16}, {14, 12}, {10, 16}}, square, rule, "on x = 10"));
-    EXPECT_TRUE(checkCase({{0, -5}, {8, -1}, {8, -5}, {0, -1}}, square, rule, "bow tie below"));
+    // Two lobes pinched at (16, 0) (rotation index 1, not simple) right of x = 10, with two
+    // vertices on that line's extension: nothing, without the simple-ring test.
+    EXPECT_TRUE(checkCase({{12, -2}, {16, 0}, {20, -2}, {20, 2}, {16, 0}, {12, 2}}, square, rule,
+                          "pinched, right"));
+    // A triangle above the square with a vertex on the line x = 10.
+    EXPECT_TRUE(checkCase({{10, 12}, {14, 16}, {6, 16}}, square, rule, "above, on x = 10"));
+    // A bow tie (rotation index 0) below the square leaves before the vertex test: the
+    // general path.
+    EXPECT_FALSE(checkCase({{0, -5}, {8, -1}, {8, -5}, {0, -1}}, square, rule, "bow tie below"));
   }
-  // The bow tie crossing the square is not simple: the general path.
-  EXPECT_FALSE(checkCase({{-2, 2}, {5, 6}, {5, 2}, {-2, 6}}, square, FillRule::NonZero, "across"));
+  // A ring touching itself across the square: the general path.
+  EXPECT_FALSE(checkCase({{-2, -2}, {5, 4}, {12, -2}, {12, 12}, {5, 4}, {-2, 12}}, square,
+                         FillRule::NonZero, "pinched across"));
 }
 
 TEST(StageSimpleConvex, VerticesOnTheBoundaryGoToTheGeneralPath) {
