@@ -48,7 +48,7 @@ IPoint pixelOf(const XPoint& p, std::int64_t unitsPerStep) {
   return {roundDiv(p.x, d), roundDiv(p.y, d)};
 }
 
-IPoint direction(const EdgePiece& p) { return {p.lineB.x - p.lineA.x, p.lineB.y - p.lineA.y}; }
+IPoint direction(const EdgePiece& p) { return p.direction(); }
 
 // Exact: does the piece p..q on the integer line a-b meet the pixel around grid point c? A pixel
 // is half-open, [c - 1/2, c + 1/2) on each axis (pixelOf() rounds ties up), so every point lies
@@ -203,7 +203,7 @@ std::vector<InputEdge> snapRoundPieces(const Arrangement& arrangement, std::int6
     hits.clear();
     hot.near(p.fx * inv, p.fy * inv, q.fx * inv, q.fy * inv, [&](IPoint c) {
       if (c == first || c == last) return;
-      if (meetsPixel(piece.lineA, piece.lineB, p, q, c, unitsPerStep)) {
+      if (meetsPixel(piece.lineA(), piece.lineB(), p, q, c, unitsPerStep)) {
         hits.push_back({i128(c.x) * d.x + i128(c.y) * d.y, c});
       }
     });

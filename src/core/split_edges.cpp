@@ -399,8 +399,7 @@ class Sweep {
         a.slot = int(out_.pieces.size());
         EdgePiece kept;
         kept.left = vertexHere(p);
-        kept.lineA = a.lineA;
-        kept.lineB = a.lineB;
+        kept.setLine(a.lineA, a.lineB);
         kept.contribution = compact(a.contribution);
         kept.windBelow = compact(wind);
         kept.below = resultBelow;

@@ -20,7 +20,7 @@
 namespace roiclip::detail {
 namespace {
 
-IPoint direction(const EdgePiece& p) { return {p.lineB.x - p.lineA.x, p.lineB.y - p.lineA.y}; }
+IPoint direction(const EdgePiece& p) { return p.direction(); }
 
 // A piece seen from one of its ends: the direction from that end along the piece.
 struct Ray {

@@ -62,7 +62,7 @@ inline std::pair<Point, Point> sidePoints(const detail::Arrangement& a, const de
   const detail::XPoint& l = a.vertices[std::size_t(p.left)];
   const detail::XPoint& r = a.vertices[std::size_t(p.right)];
   const Point mid((l.fx + r.fx) / 2, (l.fy + r.fy) / 2);
-  if (p.lineA.x == p.lineB.x) return {mid + Point(d, 0), mid - Point(d, 0)};
+  if (p.ax == p.bx) return {mid + Point(d, 0), mid - Point(d, 0)};
   return {mid - Point(0, d), mid + Point(0, d)};
 }
 
