@@ -48,8 +48,6 @@ IPoint pixelOf(const XPoint& p, std::int64_t unitsPerStep) {
   return {roundDiv(p.x, d), roundDiv(p.y, d)};
 }
 
-IPoint direction(const EdgePiece& p) { return p.direction(); }
-
 // Exact: does the piece p..q on the integer line a-b meet the pixel around grid point c? A pixel
 // is half-open, [c - 1/2, c + 1/2) on each axis (pixelOf() rounds ties up), so every point lies
 // in one pixel and a piece that only touches a pixel's top or right side does not meet it. That
@@ -198,7 +196,7 @@ std::vector<InputEdge> snapRoundPieces(const Arrangement& arrangement, std::int6
     const XPoint& q = arrangement.vertices[std::size_t(to)];
     const IPoint first = pixelOfVertex[std::size_t(from)];
     const IPoint last = pixelOfVertex[std::size_t(to)];
-    IPoint d = direction(piece);
+    IPoint d = piece.direction();
     if (!forward) d = {-d.x, -d.y};
     hits.clear();
     hot.near(p.fx * inv, p.fy * inv, q.fx * inv, q.fy * inv, [&](IPoint c) {

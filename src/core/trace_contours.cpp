@@ -20,8 +20,6 @@
 namespace roiclip::detail {
 namespace {
 
-IPoint direction(const EdgePiece& p) { return p.direction(); }
-
 // A piece seen from one of its ends: the direction from that end along the piece.
 struct Ray {
   IPoint d;
@@ -48,7 +46,7 @@ bool inSectorCcw(IPoint a, IPoint b, IPoint c) {
                                           const int* outgoing, const int* incoming, int count,
                                           std::vector<Ray>& rays, std::vector<int>& pairOut) {
   const auto along = [&](int e) {
-    const IPoint d = direction(pieces[std::size_t(e)]);
+    const IPoint d = pieces[std::size_t(e)].direction();
     return pieces[std::size_t(e)].left == v ? d : IPoint{-d.x, -d.y};
   };
   if (count == 2) {
@@ -191,7 +189,7 @@ Contours traceContours(const Arrangement& arrangement, TraceScratch& scratch) {
           // or another part touching this ring's edge must find a vertex of this ring at the
           // touch point, or after rounding to doubles it may cross the edge.
           if (outFirst[v + 1] - outFirst[v] > 1 ||
-              crossSign(direction(pieces[in]), direction(pieces[out])) != 0) {
+              crossSign(pieces[in].direction(), pieces[out].direction()) != 0) {
             result.vertices.push_back(v);
           }
         }
