@@ -95,10 +95,15 @@ PolygonSet booleanGeneral(const Paths& subject, const Paths* clipPaths, const Bo
   Rings s = snapRings(subject, 0, grid);
   const Rings c = clipPaths != nullptr ? snapRings(*clipPaths, 1, grid) : Rings{};
   const WorkspaceLease ws;
-  // One contour that does not touch itself (most contours) is its own region: no sweep.
-  if (clipPaths == nullptr && spec.keepBoundary && s.size() == 1 &&
-      ringIsSimple(s[0], ws->chains)) {
-    return simpleRingRegion(s[0], spec.subjectRule, grid);
+  // One contour that does not touch itself (most contours) is its own region, and contours that
+  // touch nothing nest by what lies below each: no sweep.
+  if (clipPaths == nullptr && spec.keepBoundary && !s.empty()) {
+    if (s.size() == 1 && ringIsSimple(s[0], ws->chains)) {
+      return simpleRingRegion(s[0], spec.subjectRule, grid);
+    }
+    if (s.size() > 1 && ringsAreSimple(s, ws->chains)) {
+      return simpleRingsRegion(s, spec.subjectRule, ws->chains, grid);
+    }
   }
   return resolveGeneral(s, clipPaths != nullptr ? &c : nullptr, spec, grid, *ws);
 }

@@ -289,6 +289,14 @@ bool intersectSimpleConvex(const std::vector<IPoint>& ring, FillRule rule,
                            const Grid& grid, ChainScratch& chains, WeilerScratch& scratch,
                            PolygonSet& out);
 
+/// The same for a set of rings: each simple and no two meeting. Leaves in `scratch` what
+/// simpleRingsRegion() needs (the chain below each ring's smallest vertex).
+bool ringsAreSimple(const Rings& rings, ChainScratch& scratch);
+/// The region a set of rings that ringsAreSimple() accepted fills under `rule`, with holes and
+/// nesting, exactly as stages 1 to 4 emit it (one pass over the rings, nesting from the sweep).
+PolygonSet simpleRingsRegion(const Rings& rings, FillRule rule, ChainScratch& scratch,
+                             const Grid& grid);
+
 /// The ring's orientation (+1 counter-clockwise in the raw frame, -1 clockwise) when it is a
 /// strictly convex polygon winding once, else 0.
 int convexOrientation(const std::vector<IPoint>& ring);

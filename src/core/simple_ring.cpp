@@ -20,6 +20,8 @@
 
 #include <boost/sort/spreadsort/integer_sort.hpp>
 
+#include <roiclip/error.hpp>
+
 #include "output.hpp"
 #include "pipeline.hpp"
 #include "workspace.hpp"
@@ -55,14 +57,17 @@ struct EdgeBelowPoint {
 
 class ChainSweep {
  public:
-  ChainSweep(const std::vector<IPoint>& ring, ChainScratch& s)
-      : v_(ring), n_(int(ring.size())), s_(s), status_() {}
+  // `rings[0 .. count)`; with `below`, each ring's entry receives the chain just below its
+  // first (lexicographically smallest) vertex when the sweep reaches it, or -1.
+  ChainSweep(const std::vector<IPoint>* rings, std::size_t count, ChainScratch& s,
+             std::vector<int>* below)
+      : rings_(rings), count_(count), s_(s), below_(below), status_() {}
   ChainSweep(const ChainSweep&) = delete;
   ChainSweep& operator=(const ChainSweep&) = delete;
   ~ChainSweep() { status_.clear(); }
 
   bool run() {
-    if (n_ < 3 || !splitChains()) return false;
+    if (!splitChains()) return false;
     std::size_t next = 0;
     const std::size_t c = s_.starts.size();
     while (next < c || !s_.heap.empty()) {
@@ -110,10 +115,14 @@ class ChainSweep {
                             boost::intrusive::compare<ChainNode::NeverCompared>,
                             boost::intrusive::constant_time_size<false>>;
 
-  // Ring index after i in the chain's direction.
-  [[nodiscard]] int after(int i, int step) const {
+  [[nodiscard]] IPoint vertex(int ring, int i) const {
+    return rings_[std::size_t(ring)][std::size_t(i)];
+  }
+  // Index after i in the ring, going `step` (+1 or -1).
+  [[nodiscard]] int after(int ring, int i, int step) const {
+    const int n = int(rings_[std::size_t(ring)].size());
     i += step;
-    return i == n_ ? 0 : i < 0 ? n_ - 1 : i;
+    return i == n ? 0 : i < 0 ? n - 1 : i;
   }
 
   // The ring's maximal runs of lexicographically increasing or decreasing edges, each as a
@@ -123,35 +132,44 @@ class ChainSweep {
     chains.clear();
     s_.starts.clear();
     s_.heap.clear();
-    const auto up = [&](int i) { return v_[std::size_t(i)] < v_[std::size_t(after(i, 1))]; };
-    // A turning vertex to begin at: the first vertex where the direction changes.
-    int begin = -1;
-    for (int i = 0, prev = up(n_ - 1); i < n_; ++i) {
-      const bool u = up(i);
-      if (u != bool(prev)) {
-        begin = i;
-        break;
+    for (int r = 0; r < int(count_); ++r) {
+      const int n = int(rings_[std::size_t(r)].size());
+      if (n < 3) return false;
+      const auto up = [&](int i) { return vertex(r, i) < vertex(r, after(r, i, 1)); };
+      // A turning vertex to begin at: the first vertex where the direction changes.
+      int begin = -1;
+      for (int i = 0, prev = up(n - 1); i < n; ++i) {
+        const bool u = up(i);
+        if (u != bool(prev)) {
+          begin = i;
+          break;
+        }
+        prev = u;
       }
-      prev = u;
+      if (begin < 0) return false;  // no ring of distinct points increases all the way round
+      for (int i = begin, done = 0; done < n;) {
+        const bool u = up(i);
+        int j = i, edges = 0;
+        while (done < n && up(j) == u) {
+          j = after(r, j, 1);
+          ++edges;
+          ++done;
+        }
+        ChainNode& chain = chains.emplace_back();
+        chain.ring = r;
+        chain.step = u ? +1 : -1;
+        chain.ia = u ? i : j;
+        chain.remaining = edges;
+        i = j;
+      }
     }
-    if (begin < 0) return false;  // no ring of distinct points increases all the way round
-    for (int i = begin, done = 0; done < n_;) {
-      const bool u = up(i);
-      int j = i, edges = 0;
-      while (done < n_ && up(j) == u) {
-        j = after(j, 1);
-        ++edges;
-        ++done;
-      }
-      ChainNode& chain = chains.emplace_back();
-      chain.step = u ? +1 : -1;
-      chain.ia = u ? i : j;
-      chain.remaining = edges;
-      i = j;
+    if (below_ != nullptr) {
+      below_->assign(count_, kNotReached);
+      s_.reached.clear();
     }
     s_.starts.reserve(chains.size());
     for (std::size_t k = 0; k < chains.size(); ++k) {
-      s_.starts.push_back({frame_.key(v_[std::size_t(chains[k].ia)]), int(k)});
+      s_.starts.push_back({frame_.key(vertex(chains[k].ring, chains[k].ia)), int(k)});
     }
     // Spreadsort on the keys: on a ragged pixel edge there is a chain every two vertices.
     boost::sort::spreadsort::integer_sort(
@@ -164,9 +182,9 @@ class ChainSweep {
 
   // Makes the chain's next edge current (the chain must have one); returns its heap entry.
   ChainKey stepChain(ChainNode& chain) {
-    chain.ib = after(chain.ia, chain.step);
-    chain.a = v_[std::size_t(chain.ia)];
-    chain.b = v_[std::size_t(chain.ib)];
+    chain.ib = after(chain.ring, chain.ia, chain.step);
+    chain.a = vertex(chain.ring, chain.ia);
+    chain.b = vertex(chain.ring, chain.ib);
     --chain.remaining;
     return {frame_.key(chain.b), int(&chain - s_.chains.data())};
   }
@@ -177,7 +195,7 @@ class ChainSweep {
     // Consecutive ring edges (the first or last edges of two chains at their turning vertex)
     // share that vertex; they may not overlap along it.
     const int ep = p->step > 0 ? p->ia : p->ib, eq = q->step > 0 ? q->ia : q->ib;
-    if (after(ep, 1) == eq || after(eq, 1) == ep) {
+    if (p->ring == q->ring && (after(p->ring, ep, 1) == eq || after(q->ring, eq, 1) == ep)) {
       const IPoint s = p->a == q->a || p->a == q->b ? p->a : p->b;
       const IPoint u = p->a == s ? p->b : p->a, w = q->a == s ? q->b : q->a;
       return orientInGrid(s, u, w) == 0;
@@ -189,8 +207,8 @@ class ChainSweep {
   bool insertPair(int i, int j) {
     ChainNode* lo = &s_.chains[std::size_t(i)];
     ChainNode* hi = &s_.chains[std::size_t(j)];
-    if (lo->ia != hi->ia) return false;  // two ring vertices at one point
-    const IPoint p = v_[std::size_t(lo->ia)];
+    if (lo->ring != hi->ring || lo->ia != hi->ia) return false;  // two vertices at one point
+    const IPoint p = vertex(lo->ring, lo->ia);
     pushHeap(stepChain(*lo));
     pushHeap(stepChain(*hi));
     const int turn = orientInGrid(p, lo->b, hi->b);
@@ -208,6 +226,11 @@ class ChainSweep {
     hi->above = above;
     if (below != nullptr) below->above = lo;
     (above != nullptr ? above->below : top_) = hi;
+    // A ring's first pair of chains starts at its smallest vertex: what lies below it there.
+    if (below_ != nullptr && (*below_)[std::size_t(lo->ring)] == kNotReached) {
+      (*below_)[std::size_t(lo->ring)] = below != nullptr ? int(below - s_.chains.data()) : -1;
+      s_.reached.push_back(lo->ring);
+    }
     return !conflict(below, lo) && !conflict(hi, above);
   }
 
@@ -227,7 +250,9 @@ class ChainSweep {
   bool removePair(int i, int j) {
     ChainNode* lo = &s_.chains[std::size_t(i)];
     ChainNode* hi = &s_.chains[std::size_t(j)];
-    if (lo->remaining != 0 || hi->remaining != 0 || lo->ib != hi->ib) return false;
+    if (lo->remaining != 0 || hi->remaining != 0 || lo->ring != hi->ring || lo->ib != hi->ib) {
+      return false;
+    }
     if (lo->above != hi) std::swap(lo, hi);
     if (lo->above != hi) return false;  // something passes between them into their end
     ChainNode* below = lo->below;
@@ -269,9 +294,11 @@ class ChainSweep {
     h[hole] = last;
   }
 
-  const std::vector<IPoint>& v_;
-  const int n_;
+  static constexpr int kNotReached = -2;
+  const std::vector<IPoint>* rings_;
+  std::size_t count_;
   ChainScratch& s_;
+  std::vector<int>* below_;
   const StartFrame frame_;
   Status status_;
   ChainNode* top_ = nullptr;  // the top chain of the status, null when it is empty
@@ -307,7 +334,114 @@ bool turnsOnce(const std::vector<IPoint>& ring) {
 }
 
 bool ringIsSimple(const std::vector<IPoint>& ring, ChainScratch& scratch, bool turnsChecked) {
-  return (turnsChecked || turnsOnce(ring)) && ChainSweep(ring, scratch).run();
+  return (turnsChecked || turnsOnce(ring)) && ChainSweep(&ring, 1, scratch, nullptr).run();
+}
+
+bool ringsAreSimple(const Rings& rings, ChainScratch& scratch) {
+  for (const std::vector<IPoint>& ring : rings) {
+    if (!turnsOnce(ring)) return false;
+  }
+  return ChainSweep(rings.data(), rings.size(), scratch, &scratch.below).run();
+}
+
+PolygonSet simpleRingsRegion(const Rings& rings, FillRule rule, ChainScratch& scratch,
+                             const Grid& grid) {
+  const std::size_t count = rings.size();
+  std::vector<int>& around = scratch.enclosing;  // the innermost ring around each ring
+  std::vector<int>& winding = scratch.winding;   // the winding number just inside each ring
+  std::vector<int>& polygonOf = scratch.polygonOf;
+  std::vector<int>& holeOf = scratch.holeOf;
+  around.assign(count, -1);
+  winding.assign(count, 0);
+  polygonOf.assign(count, -1);
+  holeOf.assign(count, -1);
+  // Per ring: its smallest vertex, whether it runs counter-clockwise, whether it bounds the
+  // result (filled on one side only), whether its inside is filled, and the nearest such ring
+  // around it; rings rounding collapses are dropped with what lies inside them.
+  std::vector<std::size_t> first(count);
+  std::vector<char> ccw(count), inResult(count), filledInside(count), dropped(count, 0);
+  std::vector<int> resultAround(count, -1);
+  for (std::size_t r = 0; r < count; ++r) {
+    const std::vector<IPoint>& ring = rings[r];
+    const std::size_t n = ring.size();
+    first[r] = std::size_t(std::min_element(ring.begin(), ring.end()) - ring.begin());
+    ccw[r] =
+        orientInGrid(ring[(first[r] + n - 1) % n], ring[first[r]], ring[(first[r] + 1) % n]) > 0;
+  }
+  const OutputFrame frame(grid);
+  PolygonSet result;
+  // In the order the sweep reached the rings (their smallest vertices in lexicographic order,
+  // the order stages 1 to 4 emit them in). The chain just below a ring's smallest vertex
+  // belongs to the innermost ring around it when that ring's inside lies above the chain, else
+  // to a ring beside it, which has the same innermost ring around it.
+  for (const int ri : scratch.reached) {
+    const std::size_t r = std::size_t(ri);
+    const int b = scratch.below[r];
+    int out = -1;
+    if (b >= 0) {
+      const ChainNode& chain = scratch.chains[std::size_t(b)];
+      const std::size_t rb = std::size_t(chain.ring);
+      out = (chain.step > 0) == bool(ccw[rb]) ? int(rb) : around[rb];
+    }
+    around[r] = out;
+    const int outside = out >= 0 ? winding[std::size_t(out)] : 0;
+    winding[r] = outside + (ccw[r] ? 1 : -1);
+    filledInside[r] = isFilled(rule, winding[r]);
+    inResult[r] = filledInside[r] != isFilled(rule, outside);
+    resultAround[r] = out < 0                      ? -1
+                      : inResult[std::size_t(out)] ? out
+                                                   : resultAround[std::size_t(out)];
+    if (!inResult[r]) continue;
+    const int owner = resultAround[r];  // an outer ring's hole, or a hole's outer ring
+    if (owner >= 0 && dropped[std::size_t(owner)]) {
+      dropped[r] = 1;
+      continue;
+    }
+    const bool hole = !filledInside[r];
+    if (hole && (owner < 0 || polygonOf[std::size_t(owner)] < 0)) {
+      throw InternalError("simpleRingsRegion: hole without an outer ring");
+    }
+    // As traced with the filled side on the left from the lower piece at the smallest vertex
+    // (an outer ring from that vertex, a hole from that piece's other end), output reversed.
+    const std::vector<IPoint>& ring = rings[r];
+    const std::size_t n = ring.size();
+    const bool forward = bool(ccw[r]) != hole;  // the ring's order has the filled side on the left
+    const auto at = [&](std::size_t k) {
+      return ring[forward ? (first[r] + k) % n : (first[r] + n - k % n) % n];
+    };
+    Path path;
+    path.reserve(n);
+    const auto add = [&](IPoint q) {
+      const Point p = frame.point(XPoint(q));
+      if (path.empty() || p != path.back()) path.push_back(p);
+    };
+    if (!hole) {
+      for (std::size_t k = n; k-- > 0;) add(at(k));
+    } else {
+      for (std::size_t k = n - 1; k-- > 0;) add(at(k));
+      add(at(n - 1));
+    }
+    while (path.size() > 1 && path.back() == path.front()) path.pop_back();
+    if (path.size() < 3) {
+      dropped[r] = 1;
+      continue;
+    }
+    if (!hole) {
+      Polygon polygon;
+      polygon.outer = std::move(path);
+      if (owner >= 0) {
+        polygon.parent = polygonOf[std::size_t(resultAround[std::size_t(owner)])];
+        polygon.parentHole = holeOf[std::size_t(owner)];
+      }
+      polygonOf[r] = int(result.polygons.size());
+      result.polygons.push_back(std::move(polygon));
+    } else {
+      Polygon& outer = result.polygons[std::size_t(polygonOf[std::size_t(owner)])];
+      holeOf[r] = int(outer.holes.size());
+      outer.holes.push_back(std::move(path));
+    }
+  }
+  return result;
 }
 
 PolygonSet simpleRingRegion(const std::vector<IPoint>& ring, FillRule rule, const Grid& grid) {

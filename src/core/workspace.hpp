@@ -68,6 +68,7 @@ struct ChainNode {
   ChainNode* above = nullptr;
   IPoint a, b;
   int ia = 0, ib = 0;
+  int ring = 0;       ///< which ring of the set
   int step = 0;       ///< +1 when the chain runs forward through the ring, -1 backward
   int remaining = 0;  ///< edges after the current one
   /// The status is built by position (insert_before), never by comparing two nodes: the
@@ -88,11 +89,17 @@ struct ChainKey {
 struct ChainScratch {
   std::vector<ChainNode> chains;
   std::vector<ChainKey> starts, heap;
+  /// ringsAreSimple(): per ring, the chain below its smallest vertex (-1: none), and the rings in
+  /// the order the sweep reached them; then simpleRingsRegion()'s nesting arrays.
+  std::vector<int> below, reached, enclosing, winding, polygonOf, holeOf;
   template <class F>
   void forEach(F f) {
     f(chains);
     f(starts);
     f(heap);
+    for (std::vector<int>* v : {&below, &reached, &enclosing, &winding, &polygonOf, &holeOf}) {
+      f(*v);
+    }
   }
 };
 

@@ -202,6 +202,68 @@ TEST(StageSimpleRing, RotationIndexRejectsMostSelfCrossingRings) {
   EXPECT_FALSE(chainSweepSimple(pinched));
 }
 
+// Sets of rings that touch nothing: nesting from the chain sweep against stages 1 to 4.
+void expectSetLikeGeneralPath(const Paths& paths, const std::string& what) {
+  const Grid grid = resolveGrid(Options{}.grid, paths);
+  const detail::Rings rings = detail::snapRings(paths, 0, grid);
+  for (FillRule rule : kRules) {
+    testing::expectSameSet(simplify(paths, rule), stages::generalSimplify(paths, rule),
+                           what + " " + std::string(toString(rule)));
+  }
+}
+
+Path square(double c, double h, bool counterClockwise) {
+  Path p = {{c - h, c - h}, {c + h, c - h}, {c + h, c + h}, {c - h, c + h}};
+  if (!counterClockwise) std::reverse(p.begin(), p.end());
+  return p;
+}
+
+TEST(StageSimpleRing, SetsOfRingsNestLikeTheGeneralPath) {
+  detail::ChainScratch scratch;
+  // Five nested squares, alternating and equal orientations; two nests side by side.
+  for (const bool alternate : {true, false}) {
+    Paths nest;
+    for (int k = 0; k < 5; ++k) nest.push_back(square(50, 40 - 7 * k, !alternate || k % 2 == 0));
+    Paths two = nest;
+    for (const Path& p : nest) {
+      Path q = p;
+      for (Point& v : q) v += Point(100, 30);
+      two.push_back(q);
+    }
+    for (const Paths* set : {&nest, &two}) {
+      const Grid grid = resolveGrid(Options{}.grid, *set);
+      ASSERT_TRUE(detail::ringsAreSimple(detail::snapRings(*set, 0, grid), scratch));
+      expectSetLikeGeneralPath(*set, alternate ? "alternating nest" : "same-way nest");
+    }
+  }
+  // Random: a 4 x 4 grid of cells, each empty or holding 1 or 2 concentric star-shaped rings
+  // of random orientation, each well inside the one around it (mostly not touching it).
+  std::mt19937 rng(99);
+  int taken = 0;
+  for (int trial = 0; trial < 150; ++trial) {
+    Paths set;
+    for (int cell = 0; cell < 16; ++cell) {
+      const int depth = int(rng() % 3);
+      double radius = 45;
+      for (int d = 0; d < depth; ++d) {
+        Path ring =
+            stages::starShapedRing(rng, d == 0 ? 12 + int(rng() % 12) : 6 + int(rng() % 4),
+                                   {100.0 * (cell % 4) + 50, 100.0 * (cell / 4) + 50}, radius, 0.7);
+        if (rng() % 2 == 0) std::reverse(ring.begin(), ring.end());
+        set.push_back(ring);
+        // Well inside: an edge between vertices at 0.7 * radius a third of a turn apart passes
+        // 0.35 * radius from the centre.
+        radius *= 0.3;
+      }
+    }
+    if (set.size() < 2) continue;
+    const Grid grid = resolveGrid(Options{}.grid, set);
+    taken += detail::ringsAreSimple(detail::snapRings(set, 0, grid), scratch) ? 1 : 0;
+    expectSetLikeGeneralPath(set, "trial " + std::to_string(trial));
+  }
+  EXPECT_GT(taken, 60);  // most sets take the sweep-free path (rounding makes some touch)
+}
+
 // Small random rings on a 6 x 6 grid: repeated vertices, touching and collinear edges are
 // common, so both verdicts occur often.
 TEST(StageSimpleRing, AgreesWithBruteForceOnSmallDegenerateRings) {
