@@ -42,6 +42,12 @@ PolygonSet intersectConvexRing(const SnappedOperand& other, const SnappedOperand
                             ws.chains, ws.weiler, direct)) {
     return direct;
   }
+  // Several contours, all inside the convex ring and touching nothing (a contour with its holes
+  // inside the ROI): the region they fill, nested by the chain sweep.
+  if (other.rings.size() > 1 && ringsInsideConvex(other.rings, convex.rings[0], convex.convex) &&
+      ringsAreSimple(other.rings, ws.chains)) {
+    return simpleRingsRegion(other.rings, other.rule, ws.chains, grid);
+  }
   BooleanSpec spec;
   spec.subjectRule = other.rule;
   spec.maxCrossings = limits.maxCrossings;

@@ -297,6 +297,11 @@ bool ringsAreSimple(const Rings& rings, ChainScratch& scratch);
 PolygonSet simpleRingsRegion(const Rings& rings, FillRule rule, ChainScratch& scratch,
                              const Grid& grid);
 
+/// Whether every vertex of the rings lies strictly inside the convex ring (orientation
+/// `convexOrientation`): then so does everything they fill. Stops at the first vertex outside.
+bool ringsInsideConvex(const Rings& rings, const std::vector<IPoint>& convex,
+                       int convexOrientation);
+
 /// The ring's orientation (+1 counter-clockwise in the raw frame, -1 clockwise) when it is a
 /// strictly convex polygon winding once, else 0.
 int convexOrientation(const std::vector<IPoint>& ring);

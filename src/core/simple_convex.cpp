@@ -91,6 +91,19 @@ bool insideRing(const CcwRing& s, IPoint p) {
 
 }  // namespace
 
+bool ringsInsideConvex(const Rings& rings, const std::vector<IPoint>& convex,
+                       int convexOrientation) {
+  const std::size_t m = convex.size();
+  for (const std::vector<IPoint>& ring : rings) {
+    for (const IPoint& p : ring) {
+      for (std::size_t j = 0; j < m; ++j) {
+        if (orientInGrid(convex[j], convex[(j + 1) % m], p) * convexOrientation <= 0) return false;
+      }
+    }
+  }
+  return true;
+}
+
 bool intersectSimpleConvex(const std::vector<IPoint>& ring, FillRule rule,
                            const std::vector<IPoint>& convex, int convexOrientation,
                            const Grid& grid, ChainScratch& chains, WeilerScratch& w,

@@ -127,6 +127,41 @@ TEST(StageSimpleConvex, VerticesOnASideLineOutsideTheRingAreCrossingsElsewhere) 
   }
 }
 
+// Several rings inside the convex ring, touching nothing (a contour group with its holes inside
+// the ROI): nested by the chain sweep, as the general path nests them.
+TEST(StageSimpleConvex, RingSetsInsideTheConvexRingNestLikeTheGeneralPath) {
+  const Path roi = {{0, 0}, {400, -20}, {420, 400}, {-10, 380}};
+  std::mt19937 rng(5);
+  int taken = 0;
+  for (int trial = 0; trial < 100; ++trial) {
+    Paths set;
+    for (int cell = 0; cell < 9; ++cell) {
+      const Point centre(100.0 * (cell % 3) + 100, 100.0 * (cell / 3) + 100);
+      Path outer = stages::starShapedRing(rng, 12 + int(rng() % 12), centre, 45, 0.7);
+      Path hole = stages::starShapedRing(rng, 6 + int(rng() % 4), centre, 13, 0.7);
+      if (rng() % 2 == 0) std::reverse(outer.begin(), outer.end());
+      if (rng() % 2 == 0) std::reverse(hole.begin(), hole.end());
+      set.push_back(outer);
+      if (rng() % 2 == 0) set.push_back(hole);
+    }
+    if (trial % 10 == 0) set.push_back({{390, 390}, {500, 390}, {500, 500}});  // one crosses
+    const Grid grid = resolveGrid(Options{}.grid, set, Paths{roi});
+    const detail::Rings rings = detail::snapRings(set, 0, grid);
+    const detail::Rings roiRing = detail::snapRings({roi}, 1, grid);
+    detail::Workspace ws;
+    const bool inside =
+        detail::ringsInsideConvex(rings, roiRing[0], detail::convexOrientation(roiRing[0]));
+    EXPECT_EQ(inside, trial % 10 != 0) << trial;
+    taken += inside && detail::ringsAreSimple(rings, ws.chains) ? 1 : 0;
+    for (FillRule rule : kRules) {
+      testing::expectSameSet(intersect(set, {roi}, rule),
+                             stages::generalIntersect(set, {roi}, rule, rule),
+                             "trial " + std::to_string(trial));
+    }
+  }
+  EXPECT_GT(taken, 50);
+}
+
 // Random simple rings against random convex rings. Coarse coordinates make vertices land on
 // side lines and edges pass through corners (the general path); fine ones mostly not.
 TEST(StageSimpleConvex, RandomRingsMatchTheGeneralPath) {

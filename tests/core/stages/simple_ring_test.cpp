@@ -279,7 +279,9 @@ TEST(StageSimpleRing, AgreesWithBruteForceOnSmallDegenerateRings) {
     while (r.size() > 1 && r.back() == r.front()) r.pop_back();
     if (r.size() < 3) continue;
     const bool expected = bruteForceSimple(r);
-    if (expected) ASSERT_TRUE(detail::turnsOnce(r)) << "trial " << trial;  // Hopf: necessary
+    if (expected) {
+      ASSERT_TRUE(detail::turnsOnce(r)) << "trial " << trial;  // Hopf: necessary
+    }
     std::string ring;
     for (const IPoint& p : r) ring += " (" + std::to_string(p.x) + "," + std::to_string(p.y) + ")";
     ASSERT_EQ(chainSweepSimple(r), expected) << "trial " << trial << ":" << ring;
