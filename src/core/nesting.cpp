@@ -73,18 +73,11 @@ PolygonSet buildNesting(const Arrangement& arrangement, const Contours& contours
     if (std::isnan(q.x)) q = frame.point(arrangement.vertices[std::size_t(v)]);
     return q;
   };
+  // Traced rings have the filled side on their left (outer rings counter-clockwise in the raw
+  // frame); roiclip's output orientation is the opposite, as cv::findContours returns them.
   auto toPath = [&](const TracedRing& ring) {
-    Path path;
-    path.reserve(ring.vertices.size());
-    // Traced rings have the filled side on their left (outer rings counter-clockwise in the raw
-    // frame); roiclip's output orientation is the opposite, as cv::findContours returns them.
-    // Distinct exact points may round to the same double: keep one of each run.
-    for (auto it = ring.vertices.rbegin(); it != ring.vertices.rend(); ++it) {
-      const Point p = pointOf(*it);
-      if (path.empty() || p != path.back()) path.push_back(p);
-    }
-    while (path.size() > 1 && path.back() == path.front()) path.pop_back();
-    return path;
+    const std::size_t n = ring.vertices.size();
+    return outputRing(n, [&](std::size_t k) { return pointOf(ring.vertices[n - 1 - k]); });
   };
 
   for (int r : order) {

@@ -47,4 +47,19 @@ class OutputFrame {
   double gridFactor_ = 1;
 };
 
+/// A ring as roiclip emits it: `pointAt(k)` for k = 0 .. n - 1 in output order, each point once
+/// per run of equal doubles (distinct exact points may round to the same double), the closing
+/// repeat of the first dropped. The caller drops a path of fewer than 3 points.
+template <class PointAt>
+Path outputRing(std::size_t n, PointAt pointAt) {
+  Path path;
+  path.reserve(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    const Point p = pointAt(k);
+    if (path.empty() || p != path.back()) path.push_back(p);
+  }
+  while (path.size() > 1 && path.back() == path.front()) path.pop_back();
+  return path;
+}
+
 }  // namespace roiclip::detail

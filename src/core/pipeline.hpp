@@ -257,6 +257,18 @@ Contours traceContours(const Arrangement& arrangement, TraceScratch& scratch);
 /// runs removed); rings with fewer than 2 points are dropped.
 std::vector<std::vector<IPoint>> snapRings(const Paths& paths, int operand, const Grid& grid);
 
+/// A ring's lexicographically smallest vertex and the turn there: for a simple ring, +1 when it
+/// runs counter-clockwise (winds +1 around its inside), -1 clockwise.
+struct LowestVertex {
+  std::size_t index = 0;
+  bool ccw = false;
+};
+inline LowestVertex lowestVertex(const std::vector<IPoint>& ring) {
+  const std::size_t n = ring.size();
+  const std::size_t i = std::size_t(std::min_element(ring.begin(), ring.end()) - ring.begin());
+  return {i, orientInGrid(ring[(i + n - 1) % n], ring[i], ring[(i + 1) % n]) > 0};
+}
+
 /// The simple-ring test (simple_ring.cpp): whether a ring from snapRings() is simple (distinct
 /// vertices, consecutive edges meet only at their shared vertex and are not collinear, no other
 /// edges meet). A sweep over the ring's lexicographically monotone chains: O(n log c) for n

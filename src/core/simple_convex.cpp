@@ -65,17 +65,43 @@ PolygonSet emit(WeilerScratch& w, const Grid& grid) {
   for (const std::size_t r : w.order) {
     const std::size_t begin = w.ringStart[r], n = w.ringStart[r + 1] - begin;
     const std::size_t first = w.lowest[r] - begin;
-    Path path;
-    path.reserve(n);
-    for (std::size_t k = 1; k <= n; ++k) {
-      const Point p = frame.point(w.points[begin + (first + n - k) % n]);
-      if (path.empty() || p != path.back()) path.push_back(p);
-    }
-    while (path.size() > 1 && path.back() == path.front()) path.pop_back();
+    Path path = outputRing(
+        n, [&](std::size_t k) { return frame.point(w.points[begin + (first + n - 1 - k) % n]); });
     if (path.size() >= 3) result.polygons.emplace_back().outer = std::move(path);
   }
   return result;
 }
+
+// The side lines of a convex ring taken counter-clockwise, each as its start and direction, to
+// classify points against all of them (orientInGrid() with the differences taken once).
+struct SideLines {
+  IPoint start[30], dir[30];
+  int m = 0;
+  SideLines(const std::vector<IPoint>& convex, int orientation) : m(int(convex.size())) {
+    const CcwRing c{&convex, orientation < 0};
+    for (int j = 0; j < m; ++j) {
+      start[j] = c[j];
+      const IPoint b = c[(j + 1) % m];
+      dir[j] = {b.x - start[j].x, b.y - start[j].y};
+    }
+  }
+  [[nodiscard]] unsigned all() const { return (1U << m) - 1; }
+  struct Masks {
+    unsigned left = 0;   ///< bit j: strictly left of side j
+    unsigned zeros = 0;  ///< bit j: on the line of side j
+  };
+  [[nodiscard]] Masks classify(IPoint p) const {
+    unsigned left = 0, zeros = 0;
+    for (int j = 0; j < m; ++j) {
+      const std::int64_t l = dir[j].x * (p.y - start[j].y);
+      const std::int64_t r = dir[j].y * (p.x - start[j].x);
+      left |= unsigned(l > r) << j;
+      zeros |= unsigned(l == r) << j;
+    }
+    return {left, zeros};
+  }
+};
+constexpr int kMaxSides = 30;
 
 // Whether grid point p lies inside the simple ring (p on no edge of it): crossing parity.
 bool insideRing(const CcwRing& s, IPoint p) {
@@ -93,12 +119,11 @@ bool insideRing(const CcwRing& s, IPoint p) {
 
 bool ringsInsideConvex(const Rings& rings, const std::vector<IPoint>& convex,
                        int convexOrientation) {
-  const std::size_t m = convex.size();
+  if (convex.size() > std::size_t(kMaxSides)) return false;
+  const SideLines sides(convex, convexOrientation);
   for (const std::vector<IPoint>& ring : rings) {
     for (const IPoint& p : ring) {
-      for (std::size_t j = 0; j < m; ++j) {
-        if (orientInGrid(convex[j], convex[(j + 1) % m], p) * convexOrientation <= 0) return false;
-      }
+      if (sides.classify(p).left != sides.all()) return false;
     }
   }
   return true;
@@ -112,11 +137,9 @@ bool intersectSimpleConvex(const std::vector<IPoint>& ring, FillRule rule,
   const int n = int(ring.size()), m = int(convex.size());
   // A ring that crosses itself with a loop (rotation index not +-1) leaves at once, before the
   // vertex test; one outside C does after it, and the rotation index costs it less.
-  if (n < 3 || m > 30 || !turnsOnce(ring)) return false;
+  if (n < 3 || m > kMaxSides || !turnsOnce(ring)) return false;
   // The orientation, if S is simple (asked below, after the cheaper test of its vertices).
-  const std::size_t low = std::size_t(std::min_element(ring.begin(), ring.end()) - ring.begin());
-  const bool ccw = orientInGrid(ring[(low + ring.size() - 1) % ring.size()], ring[low],
-                                ring[(low + 1) % ring.size()]) > 0;
+  const bool ccw = lowestVertex(ring).ccw;
   const CcwRing s{&ring, !ccw}, c{&convex, convexOrientation < 0};
 
   // Which side of each side line of C every vertex of S lies on: bit j of left[k] when strictly
@@ -127,24 +150,11 @@ bool intersectSimpleConvex(const std::vector<IPoint>& ring, FillRule rule,
   std::vector<unsigned>& onLine = w.onLine;
   left.resize(std::size_t(n));
   onLine.resize(std::size_t(n));
-  const unsigned all = (1U << m) - 1;
-  // Each side as its start and direction (orientInGrid() with the differences taken once).
-  IPoint sideStart[30], sideDir[30];
-  for (int j = 0; j < m; ++j) {
-    sideStart[j] = c[j];
-    const IPoint b = c[(j + 1) % m];
-    sideDir[j] = {b.x - sideStart[j].x, b.y - sideStart[j].y};
-  }
+  const SideLines sides(convex, convexOrientation);
+  const unsigned all = sides.all();
   unsigned anyLeft = 0;  // the sides some vertex lies strictly left of
   for (int k = 0; k < n; ++k) {
-    const IPoint p = ring[std::size_t(ccw ? k : n - 1 - k)];
-    unsigned bits = 0, zeros = 0;
-    for (int j = 0; j < m; ++j) {
-      const std::int64_t l = sideDir[j].x * (p.y - sideStart[j].y);
-      const std::int64_t r = sideDir[j].y * (p.x - sideStart[j].x);
-      bits |= unsigned(l > r) << j;
-      zeros |= unsigned(l == r) << j;
-    }
+    const auto [bits, zeros] = sides.classify(ring[std::size_t(ccw ? k : n - 1 - k)]);
     if (zeros != 0 && (bits | zeros) == all) return false;  // on C's boundary: the general path
     left[std::size_t(k)] = bits;
     onLine[std::size_t(k)] = zeros;
@@ -229,9 +239,9 @@ bool intersectSimpleConvex(const std::vector<IPoint>& ring, FillRule rule,
       const std::size_t enterAt = std::size_t(alongC[nextRank]);
       const Crossing& enter = crossings[enterAt];
       if (!enter.entering) return false;
-      int sides = (enter.side - leave.side + m) % m;
-      if (sides == 0 && nextRank <= rank) sides = m;
-      for (int t = 1; t <= sides; ++t) w.points.emplace_back(c[(leave.side + t) % m]);
+      int corners = (enter.side - leave.side + m) % m;
+      if (corners == 0 && nextRank <= rank) corners = m;
+      for (int t = 1; t <= corners; ++t) w.points.emplace_back(c[(leave.side + t) % m]);
       at = enterAt;
     } while (at != start);
     w.ringStart.push_back(w.points.size());

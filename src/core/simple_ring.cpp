@@ -118,9 +118,8 @@ class ChainSweep {
   [[nodiscard]] IPoint vertex(int ring, int i) const {
     return rings_[std::size_t(ring)][std::size_t(i)];
   }
-  // Index after i in the ring, going `step` (+1 or -1).
-  [[nodiscard]] int after(int ring, int i, int step) const {
-    const int n = int(rings_[std::size_t(ring)].size());
+  // Index after i in a ring of n vertices, going `step` (+1 or -1).
+  static int after(int n, int i, int step) {
     i += step;
     return i == n ? 0 : i < 0 ? n - 1 : i;
   }
@@ -135,7 +134,7 @@ class ChainSweep {
     for (int r = 0; r < int(count_); ++r) {
       const int n = int(rings_[std::size_t(r)].size());
       if (n < 3) return false;
-      const auto up = [&](int i) { return vertex(r, i) < vertex(r, after(r, i, 1)); };
+      const auto up = [&](int i) { return vertex(r, i) < vertex(r, after(n, i, 1)); };
       // A turning vertex to begin at: the first vertex where the direction changes.
       int begin = -1;
       for (int i = 0, prev = up(n - 1); i < n; ++i) {
@@ -151,12 +150,14 @@ class ChainSweep {
         const bool u = up(i);
         int j = i, edges = 0;
         while (done < n && up(j) == u) {
-          j = after(r, j, 1);
+          j = after(n, j, 1);
           ++edges;
           ++done;
         }
         ChainNode& chain = chains.emplace_back();
         chain.ring = r;
+        chain.points = rings_[std::size_t(r)].data();
+        chain.size = n;
         chain.step = u ? +1 : -1;
         chain.ia = u ? i : j;
         chain.remaining = edges;
@@ -182,9 +183,9 @@ class ChainSweep {
 
   // Makes the chain's next edge current (the chain must have one); returns its heap entry.
   ChainKey stepChain(ChainNode& chain) {
-    chain.ib = after(chain.ring, chain.ia, chain.step);
-    chain.a = vertex(chain.ring, chain.ia);
-    chain.b = vertex(chain.ring, chain.ib);
+    chain.ib = after(chain.size, chain.ia, chain.step);
+    chain.a = chain.points[chain.ia];
+    chain.b = chain.points[chain.ib];
     --chain.remaining;
     return {frame_.key(chain.b), int(&chain - s_.chains.data())};
   }
@@ -195,7 +196,7 @@ class ChainSweep {
     // Consecutive ring edges (the first or last edges of two chains at their turning vertex)
     // share that vertex; they may not overlap along it.
     const int ep = p->step > 0 ? p->ia : p->ib, eq = q->step > 0 ? q->ia : q->ib;
-    if (p->ring == q->ring && (after(p->ring, ep, 1) == eq || after(q->ring, eq, 1) == ep)) {
+    if (p->ring == q->ring && (after(p->size, ep, 1) == eq || after(q->size, eq, 1) == ep)) {
       const IPoint s = p->a == q->a || p->a == q->b ? p->a : p->b;
       const IPoint u = p->a == s ? p->b : p->a, w = q->a == s ? q->b : q->a;
       return orientInGrid(s, u, w) == 0;
@@ -333,6 +334,28 @@ bool turnsOnce(const std::vector<IPoint>& ring) {
   return turns == 1 || turns == -1;
 }
 
+namespace {
+
+// A simple ring's output path, as stages 1 to 4 trace it with the filled side on the left and
+// emit it reversed: an outer ring traced from its smallest vertex, a hole from the other end of
+// its lower edge there (where the trace of its lowest piece starts).
+Path ringPath(const std::vector<IPoint>& ring, LowestVertex lowest, bool hole,
+              const OutputFrame& frame) {
+  const std::size_t n = ring.size(), first = lowest.index;
+  const bool forward = lowest.ccw != hole;  // the ring's order has the filled side on the left
+  // Vertex t steps along the filled-left order from the smallest one; output index k takes
+  // t = n - 1 - k for an outer ring, and for a hole t = n - 2 - k, then n - 1 last.
+  const auto traced = [&](std::size_t t) {
+    return ring[forward ? (first + t) % n : (first + n - t % n) % n];
+  };
+  return outputRing(n, [&](std::size_t k) {
+    const std::size_t t = !hole ? n - 1 - k : k + 1 < n ? n - 2 - k : n - 1;
+    return frame.point(XPoint(traced(t)));
+  });
+}
+
+}  // namespace
+
 bool ringIsSimple(const std::vector<IPoint>& ring, ChainScratch& scratch, bool turnsChecked) {
   return (turnsChecked || turnsOnce(ring)) && ChainSweep(&ring, 1, scratch, nullptr).run();
 }
@@ -346,98 +369,59 @@ bool ringsAreSimple(const Rings& rings, ChainScratch& scratch) {
 
 PolygonSet simpleRingsRegion(const Rings& rings, FillRule rule, ChainScratch& scratch,
                              const Grid& grid) {
-  const std::size_t count = rings.size();
-  std::vector<int>& around = scratch.enclosing;  // the innermost ring around each ring
-  std::vector<int>& winding = scratch.winding;   // the winding number just inside each ring
-  std::vector<int>& polygonOf = scratch.polygonOf;
-  std::vector<int>& holeOf = scratch.holeOf;
-  around.assign(count, -1);
-  winding.assign(count, 0);
-  polygonOf.assign(count, -1);
-  holeOf.assign(count, -1);
-  // Per ring: its smallest vertex, whether it runs counter-clockwise, whether it bounds the
-  // result (filled on one side only), whether its inside is filled, and the nearest such ring
-  // around it; rings rounding collapses are dropped with what lies inside them.
-  std::vector<std::size_t> first(count);
-  std::vector<char> ccw(count), inResult(count), filledInside(count), dropped(count, 0);
-  std::vector<int> resultAround(count, -1);
-  for (std::size_t r = 0; r < count; ++r) {
-    const std::vector<IPoint>& ring = rings[r];
-    const std::size_t n = ring.size();
-    first[r] = std::size_t(std::min_element(ring.begin(), ring.end()) - ring.begin());
-    ccw[r] =
-        orientInGrid(ring[(first[r] + n - 1) % n], ring[first[r]], ring[(first[r] + 1) % n]) > 0;
-  }
+  std::vector<RingNesting>& rn = scratch.nesting;
+  rn.assign(rings.size(), RingNesting{});
+  for (std::size_t r = 0; r < rings.size(); ++r) rn[r].lowest = lowestVertex(rings[r]);
   const OutputFrame frame(grid);
   PolygonSet result;
   // In the order the sweep reached the rings (their smallest vertices in lexicographic order,
   // the order stages 1 to 4 emit them in). The chain just below a ring's smallest vertex
   // belongs to the innermost ring around it when that ring's inside lies above the chain, else
   // to a ring beside it, which has the same innermost ring around it.
-  for (const int ri : scratch.reached) {
-    const std::size_t r = std::size_t(ri);
-    const int b = scratch.below[r];
-    int out = -1;
+  for (const int r : scratch.reached) {
+    RingNesting& ring = rn[std::size_t(r)];
+    const int b = scratch.below[std::size_t(r)];
     if (b >= 0) {
       const ChainNode& chain = scratch.chains[std::size_t(b)];
-      const std::size_t rb = std::size_t(chain.ring);
-      out = (chain.step > 0) == bool(ccw[rb]) ? int(rb) : around[rb];
+      const RingNesting& beside = rn[std::size_t(chain.ring)];
+      ring.around = (chain.step > 0) == beside.lowest.ccw ? chain.ring : beside.around;
     }
-    around[r] = out;
-    const int outside = out >= 0 ? winding[std::size_t(out)] : 0;
-    winding[r] = outside + (ccw[r] ? 1 : -1);
-    filledInside[r] = isFilled(rule, winding[r]);
-    inResult[r] = filledInside[r] != isFilled(rule, outside);
-    resultAround[r] = out < 0                      ? -1
-                      : inResult[std::size_t(out)] ? out
-                                                   : resultAround[std::size_t(out)];
-    if (!inResult[r]) continue;
-    const int owner = resultAround[r];  // an outer ring's hole, or a hole's outer ring
-    if (owner >= 0 && dropped[std::size_t(owner)]) {
-      dropped[r] = 1;
+    const RingNesting* around = ring.around >= 0 ? &rn[std::size_t(ring.around)] : nullptr;
+    const int outside = around != nullptr ? around->winding : 0;
+    ring.winding = outside + (ring.lowest.ccw ? 1 : -1);
+    ring.filledInside = isFilled(rule, ring.winding);
+    ring.inResult = ring.filledInside != isFilled(rule, outside);
+    ring.resultAround = around == nullptr  ? -1
+                        : around->inResult ? ring.around
+                                           : around->resultAround;
+    if (!ring.inResult) continue;
+    // An outer ring's owner is the hole it lies in; a hole's, its outer ring.
+    const int owner = ring.resultAround;
+    if (owner >= 0 && rn[std::size_t(owner)].dropped) {
+      ring.dropped = true;
       continue;
     }
-    const bool hole = !filledInside[r];
-    if (hole && (owner < 0 || polygonOf[std::size_t(owner)] < 0)) {
+    const bool hole = !ring.filledInside;
+    if (hole && (owner < 0 || rn[std::size_t(owner)].polygon < 0)) {
       throw InternalError("simpleRingsRegion: hole without an outer ring");
     }
-    // As traced with the filled side on the left from the lower piece at the smallest vertex
-    // (an outer ring from that vertex, a hole from that piece's other end), output reversed.
-    const std::vector<IPoint>& ring = rings[r];
-    const std::size_t n = ring.size();
-    const bool forward = bool(ccw[r]) != hole;  // the ring's order has the filled side on the left
-    const auto at = [&](std::size_t k) {
-      return ring[forward ? (first[r] + k) % n : (first[r] + n - k % n) % n];
-    };
-    Path path;
-    path.reserve(n);
-    const auto add = [&](IPoint q) {
-      const Point p = frame.point(XPoint(q));
-      if (path.empty() || p != path.back()) path.push_back(p);
-    };
-    if (!hole) {
-      for (std::size_t k = n; k-- > 0;) add(at(k));
-    } else {
-      for (std::size_t k = n - 1; k-- > 0;) add(at(k));
-      add(at(n - 1));
-    }
-    while (path.size() > 1 && path.back() == path.front()) path.pop_back();
+    Path path = ringPath(rings[std::size_t(r)], ring.lowest, hole, frame);
     if (path.size() < 3) {
-      dropped[r] = 1;
+      ring.dropped = true;
       continue;
     }
     if (!hole) {
       Polygon polygon;
       polygon.outer = std::move(path);
       if (owner >= 0) {
-        polygon.parent = polygonOf[std::size_t(resultAround[std::size_t(owner)])];
-        polygon.parentHole = holeOf[std::size_t(owner)];
+        polygon.parent = rn[std::size_t(rn[std::size_t(owner)].resultAround)].polygon;
+        polygon.parentHole = rn[std::size_t(owner)].hole;
       }
-      polygonOf[r] = int(result.polygons.size());
+      ring.polygon = int(result.polygons.size());
       result.polygons.push_back(std::move(polygon));
     } else {
-      Polygon& outer = result.polygons[std::size_t(polygonOf[std::size_t(owner)])];
-      holeOf[r] = int(outer.holes.size());
+      Polygon& outer = result.polygons[std::size_t(rn[std::size_t(owner)].polygon)];
+      ring.hole = int(outer.holes.size());
       outer.holes.push_back(std::move(path));
     }
   }
@@ -445,25 +429,10 @@ PolygonSet simpleRingsRegion(const Rings& rings, FillRule rule, ChainScratch& sc
 }
 
 PolygonSet simpleRingRegion(const std::vector<IPoint>& ring, FillRule rule, const Grid& grid) {
-  const std::size_t n = ring.size();
-  const std::size_t first = std::size_t(std::min_element(ring.begin(), ring.end()) - ring.begin());
-  const std::size_t prev = (first + n - 1) % n, next = (first + 1) % n;
-  // The turn at the lexicographically smallest vertex gives the orientation of a simple ring: a
-  // counter-clockwise one winds +1 around its inside, a clockwise one -1.
-  const bool ccw = orientInGrid(ring[prev], ring[first], ring[next]) > 0;
+  const LowestVertex lowest = lowestVertex(ring);
   PolygonSet result;
-  if (!isFilled(rule, ccw ? 1 : -1)) return result;
-  // As the general path emits it: traced counter-clockwise from the smallest vertex, output
-  // reversed (roiclip's orientation), so the path ends at the smallest vertex.
-  const OutputFrame frame(grid);
-  Path path;
-  path.reserve(n);
-  for (std::size_t k = 1; k <= n; ++k) {
-    const std::size_t i = ccw ? (first + n - k) % n : (first + k) % n;
-    const Point p = frame.point(XPoint(ring[i]));
-    if (path.empty() || p != path.back()) path.push_back(p);
-  }
-  while (path.size() > 1 && path.back() == path.front()) path.pop_back();
+  if (!isFilled(rule, lowest.ccw ? 1 : -1)) return result;
+  Path path = ringPath(ring, lowest, /*hole=*/false, OutputFrame(grid));
   if (path.size() < 3) return result;  // distinct grid points that round to fewer doubles
   result.polygons.emplace_back().outer = std::move(path);
   return result;

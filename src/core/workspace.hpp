@@ -68,9 +68,11 @@ struct ChainNode {
   ChainNode* above = nullptr;
   IPoint a, b;
   int ia = 0, ib = 0;
-  int ring = 0;       ///< which ring of the set
-  int step = 0;       ///< +1 when the chain runs forward through the ring, -1 backward
-  int remaining = 0;  ///< edges after the current one
+  const IPoint* points = nullptr;  ///< its ring's vertices (the sweep's hot path reads them here)
+  int size = 0;                    ///< and their number
+  int ring = 0;                    ///< which ring of the set
+  int step = 0;                    ///< +1 when the chain runs forward through the ring, -1 backward
+  int remaining = 0;               ///< edges after the current one
   /// The status is built by position (insert_before), never by comparing two nodes: the
   /// comparison the tree's type asks for.
   struct NeverCompared {
@@ -84,25 +86,40 @@ struct ChainKey {
   std::uint64_t key;
   int chain;
 };
-/// The working arrays of ringIsSimple(): the chains, their starts in order, the heap of the
-/// active chains' next vertices.
+/// What simpleRingsRegion() works out per ring: its smallest vertex and orientation, the
+/// innermost ring around it, the winding number just inside, whether it bounds the result and
+/// which polygon or hole it became.
+struct RingNesting {
+  LowestVertex lowest;
+  int around = -1;        ///< the innermost ring around it, or -1
+  int resultAround = -1;  ///< the innermost ring around it that bounds the result, or -1
+  int winding = 0;        ///< the winding number just inside it
+  bool inResult = false;  ///< filled on one side only
+  bool filledInside = false;
+  bool dropped = false;  ///< rounding collapsed it, or a ring around it
+  int polygon = -1;      ///< its polygon (outer rings)
+  int hole = -1;         ///< its index among its outer ring's holes (holes)
+};
+
+/// The working arrays of ringIsSimple() / ringsAreSimple(): the chains, their starts in order,
+/// the heap of the active chains' next vertices; for a set of rings, the chain below each ring's
+/// smallest vertex (-1: none) and the rings in the order the sweep reached them, then
+/// simpleRingsRegion()'s per-ring results.
 struct ChainScratch {
   std::vector<ChainNode> chains;
   std::vector<ChainKey> starts, heap;
-  /// ringsAreSimple(): per ring, the chain below its smallest vertex (-1: none), and the rings in
-  /// the order the sweep reached them; then simpleRingsRegion()'s nesting arrays.
-  std::vector<int> below, reached, enclosing, winding, polygonOf, holeOf;
+  std::vector<int> below, reached;
+  std::vector<RingNesting> nesting;
   template <class F>
   void forEach(F f) {
     f(chains);
     f(starts);
     f(heap);
-    for (std::vector<int>* v : {&below, &reached, &enclosing, &winding, &polygonOf, &holeOf}) {
-      f(*v);
-    }
+    f(below);
+    f(reached);
+    f(nesting);
   }
 };
-
 /// A crossing of a simple ring's boundary with a convex ring's (simple_convex.cpp).
 struct BoundaryCrossing {
   XPoint x;
