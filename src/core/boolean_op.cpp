@@ -13,8 +13,10 @@ namespace detail {
 namespace {
 
 PolygonSet resolve(const std::vector<InputEdge>& edges, const std::vector<ExactEdge>& exactEdges,
-                   const BooleanSpec& spec, const Grid& grid, Workspace& ws) {
+                   const BooleanSpec& spec, const Grid& grid, Workspace& ws,
+                   std::uint64_t* crossings = nullptr) {
   Arrangement arrangement = splitEdges(edges, exactEdges, spec, ws);  // stages 1 and 2
+  if (crossings != nullptr) *crossings = arrangement.crossings;
   Contours contours = traceContours(arrangement, ws.trace);
   // Nesting, where a large call peaks, reads only the vertices of the arrangement: the pieces
   // (64 bytes each; 34 MB on W3-1k-evenodd) and large tracing arrays are not held through it.
@@ -30,29 +32,96 @@ PolygonSet resolve(const std::vector<InputEdge>& edges, const std::vector<ExactE
   return result;
 }
 
-// Intersection with one convex ring: pre-clip the other operand to it, then resolve that alone.
-PolygonSet intersectConvexRing(const SnappedOperand& other, const SnappedOperand& convex,
-                               const Grid& grid, const Limits& limits, Workspace& ws) {
-  if (!isFilled(convex.rule, convex.convex)) return {};
+// Some rings AND one convex ring: the sweep-free paths where they apply, else the pre-clip and
+// stages 1 to 4. `budget` is what is left of Limits::maxCrossings; the sweep's crossings are
+// taken from it.
+PolygonSet intersectRings(const Rings& rings, FillRule rule, const SnappedOperand& convex,
+                          const Grid& grid, std::uint64_t& budget, Workspace& ws) {
   // One contour that does not touch itself (most contours): Weiler-Atherton, no sweep, when
   // its boundary crosses the convex ring's only transversally.
   PolygonSet direct;
-  if (other.rings.size() == 1 &&
-      intersectSimpleConvex(other.rings[0], other.rule, convex.rings[0], convex.convex, grid,
-                            ws.chains, ws.weiler, direct)) {
+  if (rings.size() == 1 && intersectSimpleConvex(rings[0], rule, convex.rings[0], convex.convex,
+                                                 grid, ws.chains, ws.weiler, direct)) {
     return direct;
   }
   // Several contours, all inside the convex ring and touching nothing (a contour with its holes
   // inside the ROI): the region they fill, nested by the chain sweep.
-  if (other.rings.size() > 1 && ringsInsideConvex(other.rings, convex.rings[0], convex.convex) &&
-      ringsAreSimple(other.rings, ws.chains)) {
-    return simpleRingsRegion(other.rings, other.rule, ws.chains, grid);
+  if (rings.size() > 1 && ringsInsideConvex(rings, convex.rings[0], convex.convex) &&
+      ringsAreSimple(rings, ws.chains)) {
+    return simpleRingsRegion(rings, rule, ws.chains, grid);
   }
   BooleanSpec spec;
-  spec.subjectRule = other.rule;
-  spec.maxCrossings = limits.maxCrossings;
-  preclipConvex(other.rings, convex.rings[0], convex.convex, ws, ws.edges, ws.clipped);
-  return resolve(ws.edges, ws.clipped, spec, grid, ws);
+  spec.subjectRule = rule;
+  spec.maxCrossings = budget;
+  preclipConvex(rings, convex.rings[0], convex.convex, ws, ws.edges, ws.clipped);
+  std::uint64_t found = 0;
+  PolygonSet result = resolve(ws.edges, ws.clipped, spec, grid, ws, &found);
+  budget -= found;  // the sweep throws before it finds more than the budget
+  return result;
+}
+
+// The results of groups whose regions do not touch (groupRingsForConvex()) as one set, the
+// polygons ordered as stages 1 to 4 order them: by the lexicographically smallest vertex of the
+// outer ring, a group's own order kept among equal ones.
+PolygonSet mergeGroups(std::vector<PolygonSet>& parts) {
+  if (parts.size() == 1) return std::move(parts[0]);
+  struct Entry {
+    Point key;
+    std::size_t part, index;
+  };
+  std::vector<Entry> entries;
+  std::vector<std::vector<int>> position(parts.size());
+  for (std::size_t p = 0; p < parts.size(); ++p) {
+    position[p].resize(parts[p].polygons.size());
+    for (std::size_t i = 0; i < parts[p].polygons.size(); ++i) {
+      const Path& outer = parts[p].polygons[i].outer;
+      Point key = outer[0];
+      for (const Point& q : outer) {
+        if (q.x < key.x || (q.x == key.x && q.y < key.y)) key = q;
+      }
+      entries.push_back({key, p, i});
+    }
+  }
+  std::stable_sort(entries.begin(), entries.end(), [](const Entry& a, const Entry& b) {
+    return a.key.x != b.key.x ? a.key.x < b.key.x : a.key.y < b.key.y;
+  });
+  for (std::size_t k = 0; k < entries.size(); ++k) {
+    position[entries[k].part][entries[k].index] = int(k);
+  }
+  PolygonSet result;
+  result.polygons.reserve(entries.size());
+  for (const Entry& e : entries) {
+    Polygon& polygon = parts[e.part].polygons[e.index];
+    if (polygon.parent >= 0) polygon.parent = position[e.part][std::size_t(polygon.parent)];
+    result.polygons.push_back(std::move(polygon));
+  }
+  return result;
+}
+
+// Intersection with one convex ring. Many contours (all of an image's) are split first into
+// groups that do not touch within the convex ring, each taking its own path: the sweep then runs
+// only over the groups that need it.
+PolygonSet intersectConvexRing(const SnappedOperand& other, const SnappedOperand& convex,
+                               const Grid& grid, const Limits& limits, Workspace& ws) {
+  if (!isFilled(convex.rule, convex.convex)) return {};
+  std::uint64_t budget = limits.maxCrossings;
+  RingGroups groups;
+  if (other.rings.size() > 1 &&
+      groupRingsForConvex(other.rings, convex.rings[0], convex.convex, groups) &&
+      (groups.count() > 1 || groups.apart > 0)) {
+    std::vector<PolygonSet> parts;
+    parts.reserve(groups.count());
+    Rings group;
+    for (std::size_t g = 0; g < groups.count(); ++g) {
+      group.clear();
+      for (std::size_t k = groups.groupStart[g]; k < groups.groupStart[g + 1]; ++k) {
+        group.push_back(other.rings[std::size_t(groups.rings[k])]);
+      }
+      parts.push_back(intersectRings(group, other.rule, convex, grid, budget, ws));
+    }
+    return mergeGroups(parts);
+  }
+  return intersectRings(other.rings, other.rule, convex, grid, budget, ws);
 }
 
 // Stages 1 to 4 of the general path on snapped operands (`clip` null for simplify).

@@ -187,6 +187,8 @@ struct Arrangement {
   /// Every piece of every open input edge, in sweep order (so the pieces of one edge come
   /// left to right).
   std::vector<OpenPiece> openPieces;
+  /// Crossings the sweep found (what Limits::maxCrossings counts).
+  std::uint64_t crossings = 0;
 };
 
 /// Stage 1 (split_edges.cpp): sweep line over all edges. Finds every crossing, touching vertex
@@ -309,10 +311,29 @@ bool ringsAreSimple(const Rings& rings, ChainScratch& scratch);
 PolygonSet simpleRingsRegion(const Rings& rings, FillRule rule, ChainScratch& scratch,
                              const Grid& grid);
 
-/// Whether every vertex of the rings lies strictly inside the convex ring (orientation
-/// `convexOrientation`): then so does everything they fill. Stops at the first vertex outside.
+/// Whether every vertex of the rings lies inside the convex ring (orientation
+/// `convexOrientation`) or on its boundary: then so does everything they fill, and their
+/// intersection with it is their region. Stops at the first vertex outside.
 bool ringsInsideConvex(const Rings& rings, const std::vector<IPoint>& convex,
                        int convexOrientation);
+
+/// The rings of a subject that meet a strictly convex ring C, in groups that its intersection
+/// with C can take one at a time (convex_groups.cpp).
+struct RingGroups {
+  std::vector<int> rings;               ///< indices of the rings that meet C, group after group
+  std::vector<std::size_t> groupStart;  ///< where each group begins in `rings`, and the end
+  std::size_t apart = 0;                ///< rings that do not meet C
+  [[nodiscard]] std::size_t count() const { return groupStart.size() - 1; }
+};
+/// Splits `rings` into groups for the intersection with the strictly convex ring `convex`: a ring
+/// that does not meet C (or has fewer than 3 vertices) is left out, and the bounding boxes of the
+/// rest are cut into groups with a gap between any two, so that within C the subject's region is
+/// the disjoint union of the groups' regions and no two of them touch. False when the rings left
+/// out wind around C in total (then every point of C gets that winding number from them) or C has
+/// more than kMaxSides sides. O(n m) for n vertices and m sides of C, plus O(r log r) a level of
+/// cuts for r rings.
+bool groupRingsForConvex(const Rings& rings, const std::vector<IPoint>& convex,
+                         int convexOrientation, RingGroups& out);
 
 /// The ring's orientation (+1 counter-clockwise in the raw frame, -1 clockwise) when it is a
 /// strictly convex polygon winding once, else 0.

@@ -16,6 +16,7 @@
 // on C's boundary, an edge through a corner) returns false: the general path resolves it.
 #include <algorithm>
 
+#include "convex_sides.hpp"
 #include "output.hpp"
 #include "pipeline.hpp"
 #include "workspace.hpp"
@@ -24,17 +25,6 @@ namespace roiclip::detail {
 namespace {
 
 using Crossing = BoundaryCrossing;
-
-// Ring access in counter-clockwise order.
-struct CcwRing {
-  const std::vector<IPoint>* ring;
-  bool reversed;
-  [[nodiscard]] int size() const { return int(ring->size()); }
-  [[nodiscard]] IPoint operator[](int k) const {
-    const int n = size();
-    return (*ring)[std::size_t(reversed ? n - 1 - k : k)];
-  }
-};
 
 // Orders two points on the segment a -> b by their distance from a.
 bool beforeAlong(IPoint a, IPoint b, const XPoint& p, const XPoint& q) {
@@ -72,37 +62,6 @@ PolygonSet emit(WeilerScratch& w, const Grid& grid) {
   return result;
 }
 
-// The side lines of a convex ring taken counter-clockwise, each as its start and direction, to
-// classify points against all of them (orientInGrid() with the differences taken once).
-struct SideLines {
-  IPoint start[30], dir[30];
-  int m = 0;
-  SideLines(const std::vector<IPoint>& convex, int orientation) : m(int(convex.size())) {
-    const CcwRing c{&convex, orientation < 0};
-    for (int j = 0; j < m; ++j) {
-      start[j] = c[j];
-      const IPoint b = c[(j + 1) % m];
-      dir[j] = {b.x - start[j].x, b.y - start[j].y};
-    }
-  }
-  [[nodiscard]] unsigned all() const { return (1U << m) - 1; }
-  struct Masks {
-    unsigned left = 0;   ///< bit j: strictly left of side j
-    unsigned zeros = 0;  ///< bit j: on the line of side j
-  };
-  [[nodiscard]] Masks classify(IPoint p) const {
-    unsigned left = 0, zeros = 0;
-    for (int j = 0; j < m; ++j) {
-      const std::int64_t l = dir[j].x * (p.y - start[j].y);
-      const std::int64_t r = dir[j].y * (p.x - start[j].x);
-      left |= unsigned(l > r) << j;
-      zeros |= unsigned(l == r) << j;
-    }
-    return {left, zeros};
-  }
-};
-constexpr int kMaxSides = 30;
-
 // Whether grid point p lies inside the simple ring (p on no edge of it): crossing parity.
 bool insideRing(const CcwRing& s, IPoint p) {
   bool in = false;
@@ -123,7 +82,8 @@ bool ringsInsideConvex(const Rings& rings, const std::vector<IPoint>& convex,
   const SideLines sides(convex, convexOrientation);
   for (const std::vector<IPoint>& ring : rings) {
     for (const IPoint& p : ring) {
-      if (sides.classify(p).left != sides.all()) return false;
+      const auto [left, zeros] = sides.classify(p);
+      if ((left | zeros) != sides.all()) return false;
     }
   }
   return true;
@@ -153,16 +113,31 @@ bool intersectSimpleConvex(const std::vector<IPoint>& ring, FillRule rule,
   const SideLines sides(convex, convexOrientation);
   const unsigned all = sides.all();
   unsigned anyLeft = 0;  // the sides some vertex lies strictly left of
+  unsigned anyOn = 0;    // the side lines some vertex lies on
   for (int k = 0; k < n; ++k) {
     const auto [bits, zeros] = sides.classify(ring[std::size_t(ccw ? k : n - 1 - k)]);
-    if (zeros != 0 && (bits | zeros) == all) return false;  // on C's boundary: the general path
     left[std::size_t(k)] = bits;
     onLine[std::size_t(k)] = zeros;
     anyLeft |= bits;
+    anyOn |= zeros;
   }
   // No vertex strictly left of some side: the ring lies in that side's closed outer half-plane,
   // and so does every point it winds around, simple or not. Nothing of it is in C.
   if (anyLeft != all) return true;
+  bool onBoundary = false;    // some vertex on C's boundary
+  bool everyInClosed = true;  // every vertex in C or on its boundary
+  for (int k = 0; anyOn != 0 && k < n; ++k) {
+    const bool inClosed = (left[std::size_t(k)] | onLine[std::size_t(k)]) == all;
+    onBoundary = onBoundary || (onLine[std::size_t(k)] != 0 && inClosed);
+    everyInClosed = everyInClosed && inClosed;
+  }
+  if (onBoundary) {
+    // A simple ring in C that touches its boundary (a tag's square at a corner of the ROI): it
+    // fills what it fills. Crossing C there: the general path.
+    if (!everyInClosed || !ringIsSimple(ring, chains, /*turnsChecked=*/true)) return false;
+    out = simpleRingRegion(ring, rule, grid);
+    return true;
+  }
   if (!ringIsSimple(ring, chains, /*turnsChecked=*/true)) return false;
   if (!isFilled(rule, ccw ? 1 : -1)) return true;  // S fills nothing under its rule
 

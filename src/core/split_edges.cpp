@@ -133,6 +133,7 @@ class Sweep {
     XPoint p;
     while (nextPoint(p)) visit(p);
     if (!status_.empty()) throw InternalError("splitEdges: sweep ended with active pieces");
+    out_.crossings = crossings_;
     return std::move(out_);
   }
 

@@ -176,27 +176,38 @@ Contours traceContours(const Arrangement& arrangement, TraceScratch& scratch) {
         TracedRing ring;
         const std::size_t firstVertex = result.vertices.size();
         int minVertex = stackV[k];
-        std::size_t minAt = 0;
+        std::size_t minAt = 0, minKeptAt = firstVertex;
         for (std::size_t i = 0; i < n; ++i) {
           const int v = stackV[k + i];
-          if (v < minVertex) {
-            minVertex = v;
-            minAt = i;
-          }
           const int in = stackE[k + (i + n - 1) % n];
           const int out = stackE[k + i];
           // A straight-on vertex is dropped unless other result pieces meet there too: a hole
           // or another part touching this ring's edge must find a vertex of this ring at the
-          // touch point, or after rounding to doubles it may cross the edge.
+          // touch point, or after rounding to doubles it may cross the edge. The smallest
+          // vertex is never straight-on.
           if (outFirst[v + 1] - outFirst[v] > 1 ||
               crossSign(pieces[in].direction(), pieces[out].direction()) != 0) {
+            if (v < minVertex) {
+              minVertex = v;
+              minAt = i;
+              minKeptAt = result.vertices.size();
+            }
             result.vertices.push_back(v);
           }
         }
-        ring.vertices = {result.vertices.data() + firstVertex,
-                         result.vertices.size() - firstVertex};
+        // The ring starts where its reference piece (the lower of the two at its smallest
+        // vertex) comes from, whichever piece the walk began with: at the smallest vertex when
+        // the piece leaves it (an outer ring), else at the kept vertex before it (a hole). So
+        // each ring comes out the same whatever else the arrangement holds (edges of other
+        // operands or groups that split its own).
         const int inMin = stackE[k + (minAt + n - 1) % n];
         const int outMin = stackE[k + minAt];
+        const auto kept = result.vertices.begin() + std::ptrdiff_t(firstVertex);
+        auto start = result.vertices.begin() + std::ptrdiff_t(minKeptAt);
+        if (inMin < outMin) start = start == kept ? result.vertices.end() - 1 : start - 1;
+        std::rotate(kept, start, result.vertices.end());
+        ring.vertices = {result.vertices.data() + firstVertex,
+                         result.vertices.size() - firstVertex};
         ring.referencePiece = std::min(inMin, outMin);
         ring.belowPiece = pieces[std::size_t(ring.referencePiece)].below;
         ring.hole = sides[ring.referencePiece] == Side::Below;

@@ -108,12 +108,30 @@ TEST(StageSimpleConvex, ARingOutsideOneSideLineGivesNothingSimpleOrNot) {
 
 TEST(StageSimpleConvex, VerticesOnTheBoundaryGoToTheGeneralPath) {
   const Path square = box(0, 0, 10, 10);
-  // A vertex on a side, an edge along a side's line outside the side, an edge through a corner,
-  // an edge along a side: all resolved by the general path (checkCase compares intersect()).
+  // A vertex on a side of a ring that crosses the square, an edge along a side's line outside
+  // the side, an edge through a corner: all resolved by the general path (checkCase compares
+  // intersect()).
   EXPECT_FALSE(checkCase({{5, 0}, {12, 5}, {5, 12}}, square, FillRule::NonZero, "vertex on side"));
   EXPECT_FALSE(checkCase({{12, 0}, {15, 0}, {5, 5}}, square, FillRule::NonZero, "on a line"));
   EXPECT_FALSE(checkCase({{-2, -2}, {12, 12}, {-2, 12}}, square, FillRule::NonZero, "corner"));
-  EXPECT_FALSE(checkCase({{2, 0}, {8, 0}, {5, -5}}, square, FillRule::NonZero, "along a side"));
+  // Outside the square along one side: nothing, taken.
+  EXPECT_TRUE(checkCase({{2, 0}, {8, 0}, {5, -5}}, square, FillRule::NonZero, "along a side"));
+}
+
+// A simple ring inside the convex ring that touches its boundary (a tag's square at a corner of
+// the ROI, a contour along its side) is its own region: taken, as the general path gives it.
+TEST(StageSimpleConvex, RingsInsideTouchingTheBoundaryAreTheirOwnRegion) {
+  const Path square = box(0, 0, 10, 10);
+  for (FillRule rule : kRules) {
+    EXPECT_TRUE(checkCase({{2, 0}, {8, 0}, {5, 5}}, square, rule, "edge along a side"));
+    EXPECT_TRUE(checkCase({{0, 0}, {4, 1}, {1, 4}}, square, rule, "vertex at a corner"));
+    EXPECT_TRUE(checkCase({{5, 0}, {10, 5}, {5, 10}, {0, 5}}, square, rule, "a vertex a side"));
+    EXPECT_TRUE(checkCase(square, square, rule, "the square itself"));
+    EXPECT_TRUE(checkCase({{0, 0}, {10, 0}, {10, 10}, {0, 10}, {0, 6}, {5, 5}, {0, 4}}, square,
+                          rule, "a notch from a side"));
+  }
+  // Not simple: the general path, also inside.
+  EXPECT_FALSE(checkCase({{0, 0}, {6, 6}, {6, 0}, {0, 6}}, square, FillRule::NonZero, "bow tie"));
 }
 
 TEST(StageSimpleConvex, VerticesOnASideLineOutsideTheRingAreCrossingsElsewhere) {

@@ -1,0 +1,175 @@
+// SPDX-License-Identifier: MIT
+// The region-of-interest case for many contours: the subject's rings split into groups that the
+// intersection with a strictly convex ring C can take one at a time.
+//
+// Within C, the winding number of the subject at a point is the sum over its rings. A ring that
+// does not meet C (closed) adds the same winding number at every point of C: its winding number
+// around a vertex of C, 0 unless it runs around C. A ring that meets C adds nothing outside its
+// bounding box. So when the rings apart from C add 0 in total, and the boxes of the rings that
+// meet C fall into groups whose boxes are apart (a gap on x or on y between any two groups), the
+// region of the subject within C is the disjoint union of the regions of
+// the groups within C, and no two of these touch. Each group is then intersected alone, by the
+// sweep-free paths where they apply; the groups are found by recursive x-y cuts (as page
+// segmentation cuts a page into blocks).
+#include <algorithm>
+
+#include "convex_sides.hpp"
+#include "pipeline.hpp"
+
+namespace roiclip::detail {
+namespace {
+
+// Whether the closed segment p -> q (p != q) meets the closed convex ring C: unless a side line
+// of C or the line through p and q separates them (the separating-axis test, complete for two
+// convex sets). `outside` holds, for p and q, the sides they lie strictly right of.
+bool segmentMeetsConvex(IPoint p, IPoint q, unsigned outsideP, unsigned outsideQ,
+                        const CcwRing& c) {
+  if ((outsideP & outsideQ) != 0) return false;
+  int sign = 0;
+  for (int j = 0; j < c.size(); ++j) {
+    const int o = orientInGrid(p, q, c[j]);
+    if (o == 0 || (sign != 0 && o != sign)) return true;
+    sign = o;
+  }
+  return false;
+}
+
+// Winding number of a ring around a grid point that is not on it.
+int windingAround(const std::vector<IPoint>& ring, IPoint p) {
+  int winding = 0;
+  for (std::size_t k = 0, n = ring.size(); k < n; ++k) {
+    const IPoint a = ring[k], b = ring[(k + 1) % n];
+    if (a.y <= p.y) {
+      if (b.y > p.y && orientInGrid(a, b, p) > 0) ++winding;  // upwards, p on its left
+    } else if (b.y <= p.y && orientInGrid(a, b, p) < 0) {
+      --winding;  // downwards, p on its right
+    }
+  }
+  return winding;
+}
+
+enum class Place {
+  Apart,   // does not meet C
+  Inside,  // every vertex strictly inside C
+  Meets,   // meets C otherwise
+};
+
+// Where a ring lies relative to C; for a ring apart from C, `winding` is its winding number
+// around C.
+Place placeOf(const std::vector<IPoint>& ring, const SideLines& sides, const CcwRing& c,
+              int& winding) {
+  winding = 0;
+  if (ring.size() < 3) return Place::Apart;  // a point or a segment: it fills nothing
+  const unsigned all = sides.all();
+  unsigned anyLeft = 0, allLeft = all;
+  bool vertexInC = false;
+  for (const IPoint p : ring) {
+    const auto [left, zeros] = sides.classify(p);
+    anyLeft |= left;
+    allLeft &= left;
+    vertexInC = vertexInC || (left | zeros) == all;
+  }
+  // In the closed outer half-plane of one side: at most on C's boundary, around no point of C.
+  if (anyLeft != all) return Place::Apart;
+  if (allLeft == all) return Place::Inside;
+  if (vertexInC) return Place::Meets;
+  // Every vertex outside C: an edge may still cross it.
+  const std::size_t n = ring.size();
+  for (std::size_t k = 0; k < n; ++k) {
+    const IPoint p = ring[k], q = ring[(k + 1) % n];
+    const auto mp = sides.classify(p), mq = sides.classify(q);
+    if (segmentMeetsConvex(p, q, all & ~(mp.left | mp.zeros), all & ~(mq.left | mq.zeros), c)) {
+      return Place::Meets;
+    }
+  }
+  winding = windingAround(ring, c[0]);
+  return Place::Apart;
+}
+
+struct RingBox {
+  std::int64_t lo[2], hi[2];
+  int ring;
+};
+
+// Splits boxes[begin, end) into groups by x-y cuts: sorted on one axis, a cut falls wherever no
+// box reaches past it; each part is cut again on the other axis, until neither axis cuts.
+// Parts deeper than kMaxDepth stay whole (a staircase of boxes would cut one box a level).
+void cutIntoGroups(std::vector<RingBox>& boxes, RingGroups& out) {
+  constexpr int kMaxDepth = 48;
+  struct Part {
+    std::size_t begin, end;
+    int axis;
+    bool otherFailed;  // the other axis cut this part into nothing
+    int depth;
+  };
+  std::vector<Part> stack{{0, boxes.size(), 0, false, 0}};
+  while (!stack.empty()) {
+    const Part part = stack.back();
+    stack.pop_back();
+    const auto first = boxes.begin() + std::ptrdiff_t(part.begin);
+    const auto last = boxes.begin() + std::ptrdiff_t(part.end);
+    bool whole = part.end - part.begin == 1 || part.depth >= kMaxDepth;
+    if (!whole) {
+      const int axis = part.axis;
+      std::sort(first, last, [axis](const RingBox& a, const RingBox& b) {
+        return a.lo[axis] != b.lo[axis] ? a.lo[axis] < b.lo[axis] : a.ring < b.ring;
+      });
+      std::size_t from = part.begin;
+      std::int64_t reach = boxes[from].hi[axis];
+      const std::size_t stackBefore = stack.size();
+      for (std::size_t i = part.begin + 1; i <= part.end; ++i) {
+        if (i == part.end || boxes[i].lo[axis] > reach) {
+          if (i < part.end || from > part.begin) {
+            stack.push_back({from, i, 1 - axis, false, part.depth + 1});
+          }
+          from = i;
+        }
+        if (i < part.end) reach = std::max(reach, boxes[i].hi[axis]);
+      }
+      if (stack.size() == stackBefore) {  // no cut on this axis
+        if (part.otherFailed) {
+          whole = true;
+        } else {
+          stack.push_back({part.begin, part.end, 1 - axis, true, part.depth});
+        }
+      }
+    }
+    if (whole) {
+      for (auto it = first; it != last; ++it) out.rings.push_back(it->ring);
+      out.groupStart.push_back(out.rings.size());
+    }
+  }
+}
+
+}  // namespace
+
+bool groupRingsForConvex(const Rings& rings, const std::vector<IPoint>& convex,
+                         int convexOrientation, RingGroups& out) {
+  out.rings.clear();
+  out.groupStart.assign(1, 0);
+  out.apart = 0;
+  if (convex.size() > std::size_t(kMaxSides)) return false;
+  const SideLines sides(convex, convexOrientation);
+  const CcwRing c{&convex, convexOrientation < 0};
+  std::vector<RingBox> boxes;
+  int windingAroundC = 0;
+  for (std::size_t r = 0; r < rings.size(); ++r) {
+    int winding = 0;
+    if (placeOf(rings[r], sides, c, winding) == Place::Apart) {
+      windingAroundC += winding;
+      ++out.apart;
+      continue;
+    }
+    RingBox box{{rings[r][0].x, rings[r][0].y}, {rings[r][0].x, rings[r][0].y}, int(r)};
+    for (const IPoint p : rings[r]) {
+      box.lo[0] = std::min(box.lo[0], p.x), box.hi[0] = std::max(box.hi[0], p.x);
+      box.lo[1] = std::min(box.lo[1], p.y), box.hi[1] = std::max(box.hi[1], p.y);
+    }
+    boxes.push_back(box);
+  }
+  if (windingAroundC != 0) return false;
+  if (!boxes.empty()) cutIntoGroups(boxes, out);
+  return true;
+}
+
+}  // namespace roiclip::detail

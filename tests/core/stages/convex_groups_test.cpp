@@ -1,0 +1,182 @@
+// SPDX-License-Identifier: MIT
+// Many contours AND a convex ring, group by group (src/core/convex_groups.cpp): which rings are
+// left out and how the rest are grouped, and intersect() against the general path (all rings
+// through one sweep), polygon for polygon, vertex for vertex, parents included.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <string>
+#include <vector>
+
+#include <roiclip/error.hpp>
+#include <roiclip/roiclip.hpp>
+
+#include "pipeline.hpp"
+#include "stage_support.hpp"
+#include "support/oracle.hpp"
+#include "support/same_set.hpp"
+
+namespace roiclip {
+namespace {
+
+const FillRule kRules[] = {FillRule::EvenOdd, FillRule::NonZero, FillRule::Positive,
+                           FillRule::Negative};
+
+Path box(double x0, double y0, double x1, double y1) {
+  return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
+}
+
+struct Grouped {
+  bool ok = false;
+  detail::RingGroups groups;
+};
+
+Grouped groupsOf(const Paths& set, const Path& roi) {
+  const Grid grid = resolveGrid(Options{}.grid, set, Paths{roi});
+  const detail::Rings rings = detail::snapRings(set, 0, grid);
+  const detail::Rings c = detail::snapRings({roi}, 1, grid);
+  Grouped out;
+  out.ok = detail::groupRingsForConvex(rings, c[0], detail::convexOrientation(c[0]), out.groups);
+  return out;
+}
+
+// The rings of each group, each group sorted (the order within a group is not specified).
+std::vector<std::vector<int>> members(const detail::RingGroups& g) {
+  std::vector<std::vector<int>> out;
+  for (std::size_t k = 0; k < g.count(); ++k) {
+    out.emplace_back(g.rings.begin() + std::ptrdiff_t(g.groupStart[k]),
+                     g.rings.begin() + std::ptrdiff_t(g.groupStart[k + 1]));
+    std::sort(out.back().begin(), out.back().end());
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+TEST(StageConvexGroups, RingsApartFromTheRoiAreLeftOutAndTheRestCutAtGaps) {
+  const Path roi = box(0, 0, 100, 100);
+  // 0, 1: apart on x inside; 2 inside 0's box (nested); 3 outside a side line; 4 a segment;
+  // 5 a thin triangle piercing the ROI, every vertex outside it, but no side line apart.
+  const Paths set = {box(10, 10, 40, 40),  box(60, 10, 90, 40),  box(20, 20, 30, 30),
+                     box(120, 0, 140, 20), {{50, 50}, {55, 55}}, {{-10, 70}, {110, 75}, {-10, 80}}};
+  const Grouped g = groupsOf(set, roi);
+  ASSERT_TRUE(g.ok);
+  EXPECT_EQ(g.groups.apart, 2U);
+  const std::vector<std::vector<int>> want = {{0, 2}, {1}, {5}};
+  EXPECT_EQ(members(g.groups), want);
+}
+
+TEST(StageConvexGroups, CutsAlternateBetweenTheAxes) {
+  const Path roi = box(0, 0, 100, 100);
+  // No gap on x across all four; on y, {0, 1} and {2, 3}; then on x within each.
+  const Paths set = {box(10, 10, 40, 40), box(50, 10, 90, 40), box(30, 60, 60, 90),
+                     box(70, 60, 90, 90)};
+  const Grouped g = groupsOf(set, roi);
+  ASSERT_TRUE(g.ok);
+  const std::vector<std::vector<int>> want = {{0}, {1}, {2}, {3}};
+  EXPECT_EQ(members(g.groups), want);
+  // Boxes that touch (a shared corner) stay one group: the regions may touch there.
+  const Grouped touching = groupsOf({box(10, 10, 50, 50), box(50, 50, 90, 90)}, roi);
+  ASSERT_TRUE(touching.ok);
+  EXPECT_EQ(touching.groups.count(), 1U);
+  for (FillRule rule : kRules) {
+    testing::expectSameSet(intersect(set, {roi}, rule),
+                           stages::generalIntersect(set, {roi}, rule, rule), "four boxes");
+  }
+}
+
+TEST(StageConvexGroups, RingsAroundTheRoiMustWindZeroInTotal) {
+  const Path roi = box(0, 0, 100, 100);
+  const Path frame = box(-50, -50, 150, 150);
+  Path frameHole = box(-40, -40, 140, 140);
+  std::reverse(frameHole.begin(), frameHole.end());
+  // A frame and its hole (an image border in RETR_CCOMP): both around the ROI, winding 0 in
+  // total. Left out.
+  const Grouped framed = groupsOf({frame, frameHole, box(10, 10, 20, 20)}, roi);
+  ASSERT_TRUE(framed.ok);
+  EXPECT_EQ(framed.groups.apart, 2U);
+  EXPECT_EQ(framed.groups.count(), 1U);
+  // The frame alone winds around every point of the ROI: no grouping.
+  EXPECT_FALSE(groupsOf({frame, box(10, 10, 20, 20)}, roi).ok);
+  for (FillRule rule : kRules) {
+    const Paths sets[] = {{frame, frameHole, box(10, 10, 20, 20), box(50, 50, 70, 120)},
+                          {frame, box(10, 10, 20, 20), box(50, 50, 70, 120)},
+                          {frame, frame, box(10, 10, 20, 20)}};
+    for (const Paths& set : sets) {
+      testing::expectSameSet(intersect(set, {roi}, rule),
+                             stages::generalIntersect(set, {roi}, rule, rule), "frames");
+    }
+  }
+}
+
+TEST(StageConvexGroups, TheCrossingBudgetCountsEveryGroup) {
+  const Path roi = box(0, 0, 100, 100);
+  // Two bow ties far apart: one crossing each, in two groups.
+  const Paths set = {{{10, 10}, {30, 30}, {30, 10}, {10, 30}},
+                     {{60, 60}, {80, 80}, {80, 60}, {60, 80}}};
+  ASSERT_EQ(groupsOf(set, roi).groups.count(), 2U);
+  Options options;
+  options.limits.maxCrossings = 1;
+  EXPECT_THROW(
+      clip(ClipOp::Intersection, set, {roi}, FillRule::NonZero, FillRule::NonZero, options),
+      ResourceLimitError);
+  options.limits.maxCrossings = 2;
+  EXPECT_EQ(clip(ClipOp::Intersection, set, {roi}, FillRule::NonZero, FillRule::NonZero, options)
+                .polygons.size(),
+            4U);
+}
+
+// Scenes like an image's contours: cells with a contour, some with holes and islands, some not
+// simple, some crossing the ROI or outside it, some touching; an image frame around everything
+// in some; the ROI a random convex hull. Coarse scenes make rings touch each other and the ROI.
+TEST(StageConvexGroups, RandomScenesMatchTheGeneralPath) {
+  std::mt19937 rng(20261203);
+  int grouped = 0;
+  for (int trial = 0; trial < 240; ++trial) {
+    const bool coarse = trial % 4 == 3;
+    const double cell = coarse ? 12 : 100;
+    Paths set;
+    for (int k = 0; k < 16; ++k) {
+      const Point centre(cell * (k % 4) + cell / 2, cell * double(k / 4) + cell / 2);
+      const double r = cell * std::uniform_real_distribution<double>(0.3, 0.6)(rng);
+      Path outer = stages::starShapedRing(rng, 4 + int(rng() % 20), centre, r, 0.5);
+      if (rng() % 2 == 0) std::reverse(outer.begin(), outer.end());
+      if (rng() % 6 == 0) std::swap(outer[0], outer[outer.size() / 2]);  // not simple
+      set.push_back(outer);
+      if (rng() % 2 == 0) {
+        Path hole = stages::starShapedRing(rng, 3 + int(rng() % 8), centre, r * 0.4, 0.6);
+        if (rng() % 3 != 0) std::reverse(hole.begin(), hole.end());
+        set.push_back(hole);
+        if (rng() % 3 == 0) {
+          set.push_back(stages::starShapedRing(rng, 3 + int(rng() % 5), centre, r * 0.15, 0.6));
+        }
+      }
+    }
+    if (trial % 5 == 0) {
+      set.push_back(box(-cell, -cell, 5 * cell, 5 * cell));
+      Path hole = box(-cell / 2, -cell / 2, 4.5 * cell, 4.5 * cell);
+      std::reverse(hole.begin(), hole.end());
+      set.push_back(hole);
+    }
+    if (trial % 7 == 0) set.push_back({{cell, cell}, {cell + 1, cell}});  // a segment
+    std::vector<Point> corners;
+    for (int i = 0; i < 3 + int(rng() % 8); ++i) {
+      corners.emplace_back(std::round(std::uniform_real_distribution<double>(0, 4 * cell)(rng)),
+                           std::round(std::uniform_real_distribution<double>(0, 4 * cell)(rng)));
+    }
+    const Path roi = testing::convexHull({Path(corners.begin(), corners.end())}, trial % 2 == 1)[0];
+    if (roi.size() < 3) continue;
+    const Grouped g = groupsOf(set, roi);
+    grouped += g.ok && (g.groups.count() > 1 || g.groups.apart > 0) ? 1 : 0;
+    for (FillRule rule : kRules) {
+      testing::expectSameSet(intersect(set, {roi}, rule),
+                             stages::generalIntersect(set, {roi}, rule, rule),
+                             "trial " + std::to_string(trial));
+    }
+  }
+  EXPECT_GT(grouped, 150);  // the grouped path was taken in most scenes
+}
+
+}  // namespace
+}  // namespace roiclip
