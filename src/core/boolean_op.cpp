@@ -44,11 +44,18 @@ PolygonSet intersectRings(const Rings& rings, FillRule rule, const SnappedOperan
                                                  grid, ws.chains, ws.weiler, direct)) {
     return direct;
   }
-  // Several contours, all inside the convex ring and touching nothing (a contour with its holes
-  // inside the ROI): the region they fill, nested by the chain sweep.
-  if (rings.size() > 1 && ringsInsideConvex(rings, convex.rings[0], convex.convex) &&
-      ringsAreSimple(rings, ws.chains)) {
-    return simpleRingsRegion(rings, rule, ws.chains, grid);
+  // Several contours touching nothing: all inside the convex ring (a contour with its holes
+  // inside the ROI), the region they fill, nested by the chain sweep; else Weiler-Atherton over
+  // the rings that bound it.
+  if (rings.size() > 1) {
+    const bool inside = ringsInsideConvex(rings, convex.rings[0], convex.convex);
+    if (ringsAreSimple(rings, ws.chains)) {
+      if (inside) return simpleRingsRegion(rings, rule, ws.chains, grid);
+      if (intersectSimpleRingsConvex(rings, rule, convex.rings[0], convex.convex, grid, ws.chains,
+                                     ws.weiler, direct)) {
+        return direct;
+      }
+    }
   }
   BooleanSpec spec;
   spec.subjectRule = rule;

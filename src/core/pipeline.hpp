@@ -23,6 +23,7 @@ struct TraceScratch;    // workspace.hpp: the working arrays of traceContours()
 struct NestingScratch;  // workspace.hpp: the working arrays of buildNesting()
 struct ChainScratch;    // workspace.hpp: the working arrays of ringIsSimple()
 struct WeilerScratch;   // workspace.hpp: the working arrays of intersectSimpleConvex()
+class OutputFrame;      // output.hpp: exact points to doubles
 
 /// Operand index: 0 = subject, 1 = clip.
 constexpr int kOperands = 2;
@@ -310,6 +311,27 @@ bool ringsAreSimple(const Rings& rings, ChainScratch& scratch);
 /// nesting, exactly as stages 1 to 4 emit it (one pass over the rings, nesting from the sweep).
 PolygonSet simpleRingsRegion(const Rings& rings, FillRule rule, ChainScratch& scratch,
                              const Grid& grid);
+
+/// The nesting of a set of rings that ringsAreSimple() accepted (just before, on `scratch`),
+/// under `rule`: scratch.nesting gets each ring's smallest vertex, the innermost ring around it,
+/// its winding number, whether it bounds the region and the innermost such ring around it.
+void nestSimpleRings(const Rings& rings, FillRule rule, ChainScratch& scratch);
+/// A simple ring's output path, as stages 1 to 4 trace it with the filled side on the left and
+/// emit it reversed: an outer ring traced from its smallest vertex, a hole from the other end of
+/// its lower edge there (where the trace of its lowest piece starts).
+Path simpleRingPath(const std::vector<IPoint>& ring, LowestVertex lowest, bool hole,
+                    const OutputFrame& frame);
+
+/// intersectSimpleConvex() for a set of rings that ringsAreSimple() accepted (just before, on
+/// `chains`): Weiler-Atherton over every ring that bounds the region, holes walked clockwise;
+/// rings inside C stay whole, and a hole inside C goes to the walked ring along its outer ring's
+/// face. False (the general path) under intersectSimpleConvex()'s conditions, and when a ring
+/// that bounds the region runs around C, or walked rings along one outer ring's face are several
+/// and a hole inside C would need a point test to choose among them.
+bool intersectSimpleRingsConvex(const Rings& rings, FillRule rule,
+                                const std::vector<IPoint>& convex, int convexOrientation,
+                                const Grid& grid, ChainScratch& chains, WeilerScratch& scratch,
+                                PolygonSet& out);
 
 /// Whether every vertex of the rings lies inside the convex ring (orientation
 /// `convexOrientation`) or on its boundary: then so does everything they fill, and their

@@ -32,6 +32,156 @@ bool beforeAlong(IPoint a, IPoint b, const XPoint& p, const XPoint& q) {
   return a < b ? c < 0 : c > 0;
 }
 
+// Which side of each side line of C every vertex of s lies on (into w.left and w.onLine, in s's
+// order): bit j of left[k] when strictly left of side j, bit j of onLine[k] when on its line. A
+// vertex on a side line outside C (on the line's extension: strictly right of another side) counts
+// as right of it; an edge from it crosses that line only there, outside the side. Returns the
+// sides some vertex lies strictly left of, and in `anyOn` the side lines some vertex lies on.
+unsigned classifyVertices(const CcwRing& s, const SideLines& sides, WeilerScratch& w,
+                          unsigned& anyOn) {
+  const int n = s.size();
+  w.left.resize(std::size_t(n));
+  w.onLine.resize(std::size_t(n));
+  unsigned anyLeft = 0;
+  anyOn = 0;
+  for (int k = 0; k < n; ++k) {
+    const auto [bits, zeros] = sides.classify(s[k]);
+    w.left[std::size_t(k)] = bits;
+    w.onLine[std::size_t(k)] = zeros;
+    anyLeft |= bits;
+    anyOn |= zeros;
+  }
+  return anyLeft;
+}
+
+// Whether some vertex classified by classifyVertices() lies on C's boundary, and whether every
+// vertex lies in C or on its boundary.
+void boundaryVertices(const WeilerScratch& w, unsigned all, std::size_t n, bool& onBoundary,
+                      bool& everyInClosed) {
+  onBoundary = false;
+  everyInClosed = true;
+  for (std::size_t k = 0; k < n; ++k) {
+    const bool inClosed = (w.left[k] | w.onLine[k]) == all;
+    onBoundary = onBoundary || (w.onLine[k] != 0 && inClosed);
+    everyInClosed = everyInClosed && inClosed;
+  }
+}
+
+// Appends to w.crossings the crossings of ring s (number `ring`, classified by
+// classifyVertices()) with C's boundary, edge by edge and along each edge. False when a meeting
+// is not a transversal crossing away from the vertices of both: an edge along a side's line, or
+// with its line through a corner of C.
+bool appendCrossings(const CcwRing& s, int ring, const CcwRing& c, unsigned all, WeilerScratch& w) {
+  const int n = s.size(), m = c.size();
+  for (int k = 0; k < n; ++k) {
+    const std::size_t kq = std::size_t((k + 1) % n);
+    const unsigned lp = w.left[std::size_t(k)], lq = w.left[kq];
+    if (lp == all && lq == all) continue;  // both ends in C: the edge lies in C
+    if ((w.onLine[std::size_t(k)] & w.onLine[kq]) != 0) return false;  // along a side's line
+    const IPoint p = s[k], q = s[(k + 1) % n];
+    const std::size_t before = w.crossings.size();
+    for (unsigned changed = lp ^ lq; changed != 0; changed &= changed - 1) {
+      const int j = __builtin_ctz(changed);
+      const IPoint a = c[j], b = c[(j + 1) % m];
+      const int oa = orientInGrid(p, q, a), ob = orientInGrid(p, q, b);
+      if (oa == 0 || ob == 0) return false;  // through a corner of C
+      if (oa == ob) continue;                // crosses the side's line outside the side
+      Crossing x;
+      if (!lineIntersection(p, q, a, b, x.x)) return false;
+      x.edge = k;
+      x.side = j;
+      x.ring = ring;
+      x.entering = ((lq >> j) & 1U) != 0;
+      w.crossings.push_back(x);
+    }
+    std::sort(w.crossings.begin() + std::ptrdiff_t(before), w.crossings.end(),
+              [&](const Crossing& u, const Crossing& v) { return beforeAlong(p, q, u.x, v.x); });
+  }
+  return true;
+}
+
+// Weiler-Atherton's walk over the crossings in w.crossings (each ring's in a row, from
+// w.crossStart[r]; the rings taken with the filled side on the left, `ringAt(r)` giving ring r):
+// along a ring from each entering crossing to the next crossing on it, which leaves C, then
+// along C to the next crossing on C's boundary, which enters; round until back. The result
+// rings go to w.points / w.ringStart; `piece(t, r)` is told that result ring t runs along ring r.
+// False when the crossings do not alternate as they must.
+template <class RingAt, class Piece>
+bool walkCrossings(const CcwRing& c, RingAt ringAt, Piece piece, WeilerScratch& w) {
+  const std::vector<Crossing>& crossings = w.crossings;
+  const std::size_t kCount = crossings.size();
+  const int m = c.size();
+  // Crossings along C's boundary: by side, then along it.
+  std::vector<int>& alongC = w.alongC;
+  alongC.resize(kCount);
+  for (std::size_t i = 0; i < kCount; ++i) alongC[i] = int(i);
+  std::sort(alongC.begin(), alongC.end(), [&](int u, int v) {
+    const Crossing &a = crossings[std::size_t(u)], &b = crossings[std::size_t(v)];
+    if (a.side != b.side) return a.side < b.side;
+    return beforeAlong(c[a.side], c[(a.side + 1) % m], a.x, b.x);
+  });
+  std::vector<int>& rankOnC = w.rankOnC;
+  rankOnC.resize(kCount);
+  for (std::size_t i = 0; i < kCount; ++i) rankOnC[std::size_t(alongC[i])] = int(i);
+
+  w.used.assign(kCount, 0);
+  w.points.clear();
+  w.ringStart.assign(1, 0);
+  for (std::size_t start = 0; start < kCount; ++start) {
+    if (!crossings[start].entering || w.used[start]) continue;
+    const int t = int(w.ringStart.size()) - 1;
+    std::size_t at = start;
+    do {
+      // Entering at `at`: along its ring to the next crossing on it, which leaves C.
+      w.used[at] = 1;
+      const Crossing& in = crossings[at];
+      const CcwRing s = ringAt(in.ring);
+      const int n = s.size();
+      const std::size_t ringEnd = std::size_t(w.crossStart[std::size_t(in.ring) + 1]);
+      const std::size_t leaveAt =
+          at + 1 < ringEnd ? at + 1 : std::size_t(w.crossStart[std::size_t(in.ring)]);
+      const Crossing& leave = crossings[leaveAt];
+      if (leave.entering) return false;
+      piece(t, in.ring);
+      w.points.push_back(in.x);
+      int steps = (leave.edge - in.edge + n) % n;
+      if (steps == 0 && leaveAt <= at) steps = n;  // round the whole ring on one edge
+      for (int k = 1; k <= steps; ++k) w.points.emplace_back(s[(in.edge + k) % n]);
+      w.points.push_back(leave.x);
+      // Along C from the leaving crossing to the next crossing on C, which enters.
+      const std::size_t rank = std::size_t(rankOnC[leaveAt]);
+      const std::size_t nextRank = (rank + 1) % kCount;
+      const std::size_t enterAt = std::size_t(alongC[nextRank]);
+      const Crossing& enter = crossings[enterAt];
+      if (!enter.entering) return false;
+      int corners = (enter.side - leave.side + m) % m;
+      if (corners == 0 && nextRank <= rank) corners = m;
+      for (int k = 1; k <= corners; ++k) w.points.emplace_back(c[(leave.side + k) % m]);
+      at = enterAt;
+    } while (at != start);
+    w.ringStart.push_back(w.points.size());
+  }
+  return true;
+}
+
+// The index in w.points of the lexicographically smallest point of result ring t.
+std::size_t lowestOf(const WeilerScratch& w, std::size_t t) {
+  std::size_t first = w.ringStart[t];
+  for (std::size_t i = first + 1; i < w.ringStart[t + 1]; ++i) {
+    if (lessInBox(w.points[i], w.points[first])) first = i;
+  }
+  return first;
+}
+
+// Result ring t's output path: counter-clockwise from its smallest vertex, reversed.
+Path walkedPath(const WeilerScratch& w, std::size_t t, std::size_t lowest,
+                const OutputFrame& frame) {
+  const std::size_t begin = w.ringStart[t], n = w.ringStart[t + 1] - begin;
+  const std::size_t first = lowest - begin;
+  return outputRing(
+      n, [&](std::size_t k) { return frame.point(w.points[begin + (first + n - 1 - k) % n]); });
+}
+
 // Output as stages 1 to 4 emit it: each ring counter-clockwise from its lexicographically smallest
 // vertex, reversed (roiclip's orientation); polygons in the order of those smallest vertices.
 PolygonSet emit(WeilerScratch& w, const Grid& grid) {
@@ -39,11 +189,7 @@ PolygonSet emit(WeilerScratch& w, const Grid& grid) {
   w.lowest.clear();
   w.order.clear();
   for (std::size_t r = 0; r < ringCount; ++r) {
-    std::size_t first = w.ringStart[r];
-    for (std::size_t i = first + 1; i < w.ringStart[r + 1]; ++i) {
-      if (lessInBox(w.points[i], w.points[first])) first = i;
-    }
-    w.lowest.push_back(first);
+    w.lowest.push_back(lowestOf(w, r));
     w.order.push_back(r);
   }
   std::sort(w.order.begin(), w.order.end(), [&](std::size_t a, std::size_t b) {
@@ -53,10 +199,7 @@ PolygonSet emit(WeilerScratch& w, const Grid& grid) {
   PolygonSet result;
   result.polygons.reserve(ringCount);
   for (const std::size_t r : w.order) {
-    const std::size_t begin = w.ringStart[r], n = w.ringStart[r + 1] - begin;
-    const std::size_t first = w.lowest[r] - begin;
-    Path path = outputRing(
-        n, [&](std::size_t k) { return frame.point(w.points[begin + (first + n - 1 - k) % n]); });
+    Path path = walkedPath(w, r, w.lowest[r], frame);
     if (path.size() >= 3) result.polygons.emplace_back().outer = std::move(path);
   }
   return result;
@@ -101,127 +244,193 @@ bool intersectSimpleConvex(const std::vector<IPoint>& ring, FillRule rule,
   // The orientation, if S is simple (asked below, after the cheaper test of its vertices).
   const bool ccw = lowestVertex(ring).ccw;
   const CcwRing s{&ring, !ccw}, c{&convex, convexOrientation < 0};
-
-  // Which side of each side line of C every vertex of S lies on: bit j of left[k] when strictly
-  // left of side j, bit j of onLine[k] when on its line. A vertex on a side line outside C (on
-  // the line's extension: strictly right of another side) counts as right of it; an edge from
-  // it crosses that line only there, outside the side.
-  std::vector<unsigned>& left = w.left;
-  std::vector<unsigned>& onLine = w.onLine;
-  left.resize(std::size_t(n));
-  onLine.resize(std::size_t(n));
   const SideLines sides(convex, convexOrientation);
   const unsigned all = sides.all();
-  unsigned anyLeft = 0;  // the sides some vertex lies strictly left of
-  unsigned anyOn = 0;    // the side lines some vertex lies on
-  for (int k = 0; k < n; ++k) {
-    const auto [bits, zeros] = sides.classify(ring[std::size_t(ccw ? k : n - 1 - k)]);
-    left[std::size_t(k)] = bits;
-    onLine[std::size_t(k)] = zeros;
-    anyLeft |= bits;
-    anyOn |= zeros;
-  }
+  unsigned anyOn = 0;
   // No vertex strictly left of some side: the ring lies in that side's closed outer half-plane,
   // and so does every point it winds around, simple or not. Nothing of it is in C.
-  if (anyLeft != all) return true;
-  bool onBoundary = false;    // some vertex on C's boundary
-  bool everyInClosed = true;  // every vertex in C or on its boundary
-  for (int k = 0; anyOn != 0 && k < n; ++k) {
-    const bool inClosed = (left[std::size_t(k)] | onLine[std::size_t(k)]) == all;
-    onBoundary = onBoundary || (onLine[std::size_t(k)] != 0 && inClosed);
-    everyInClosed = everyInClosed && inClosed;
-  }
-  if (onBoundary) {
-    // A simple ring in C that touches its boundary (a tag's square at a corner of the ROI): it
-    // fills what it fills. Crossing C there: the general path.
-    if (!everyInClosed || !ringIsSimple(ring, chains, /*turnsChecked=*/true)) return false;
-    out = simpleRingRegion(ring, rule, grid);
-    return true;
+  if (classifyVertices(s, sides, w, anyOn) != all) return true;
+  if (anyOn != 0) {
+    bool onBoundary = false, everyInClosed = true;
+    boundaryVertices(w, all, std::size_t(n), onBoundary, everyInClosed);
+    if (onBoundary) {
+      // A simple ring in C that touches its boundary (a tag's square at a corner of the ROI):
+      // it fills what it fills. Crossing C there: the general path.
+      if (!everyInClosed || !ringIsSimple(ring, chains, /*turnsChecked=*/true)) return false;
+      out = simpleRingRegion(ring, rule, grid);
+      return true;
+    }
   }
   if (!ringIsSimple(ring, chains, /*turnsChecked=*/true)) return false;
   if (!isFilled(rule, ccw ? 1 : -1)) return true;  // S fills nothing under its rule
 
-  std::vector<Crossing>& crossings = w.crossings;
-  crossings.clear();
-  for (int k = 0; k < n; ++k) {
-    const std::size_t kq = std::size_t((k + 1) % n);
-    const unsigned lp = left[std::size_t(k)], lq = left[kq];
-    if (lp == all && lq == all) continue;  // both ends in C: the edge lies in C
-    if ((onLine[std::size_t(k)] & onLine[kq]) != 0) return false;  // along a side's line
-    const IPoint p = s[k], q = s[(k + 1) % n];
-    const std::size_t before = crossings.size();
-    for (unsigned changed = lp ^ lq; changed != 0; changed &= changed - 1) {
-      const int j = __builtin_ctz(changed);
-      const IPoint a = c[j], b = c[(j + 1) % m];
-      const int oa = orientInGrid(p, q, a), ob = orientInGrid(p, q, b);
-      if (oa == 0 || ob == 0) return false;  // through a corner of C
-      if (oa == ob) continue;                // crosses the side's line outside the side
-      Crossing x;
-      if (!lineIntersection(p, q, a, b, x.x)) return false;
-      x.edge = k;
-      x.side = j;
-      x.entering = ((lq >> j) & 1U) != 0;
-      crossings.push_back(x);
-    }
-    std::sort(crossings.begin() + std::ptrdiff_t(before), crossings.end(),
-              [&](const Crossing& u, const Crossing& v) { return beforeAlong(p, q, u.x, v.x); });
-  }
-
-  if (crossings.empty()) {
-    if (left[0] == all) {
+  w.crossings.clear();
+  if (!appendCrossings(s, 0, c, all, w)) return false;
+  if (w.crossings.empty()) {
+    if (w.left[0] == all) {
       out = simpleRingRegion(ring, FillRule::NonZero, grid);  // S lies in C
     } else if (insideRing(s, c[0])) {
       out = simpleRingRegion(convex, FillRule::NonZero, grid);  // C lies in S
     }
     return true;
   }
-  const std::size_t kCount = crossings.size();
-  if (kCount % 2 != 0) return false;
-  // Crossings along C's boundary: by side, then along it.
-  std::vector<int>& alongC = w.alongC;
-  alongC.resize(kCount);
-  for (std::size_t i = 0; i < kCount; ++i) alongC[i] = int(i);
-  std::sort(alongC.begin(), alongC.end(), [&](int u, int v) {
-    const Crossing &a = crossings[std::size_t(u)], &b = crossings[std::size_t(v)];
-    if (a.side != b.side) return a.side < b.side;
-    return beforeAlong(c[a.side], c[(a.side + 1) % m], a.x, b.x);
-  });
-  std::vector<int>& rankOnC = w.rankOnC;
-  rankOnC.resize(kCount);
-  for (std::size_t i = 0; i < kCount; ++i) rankOnC[std::size_t(alongC[i])] = int(i);
-
-  w.used.assign(kCount, 0);
-  w.points.clear();
-  w.ringStart.assign(1, 0);
-  for (std::size_t start = 0; start < kCount; ++start) {
-    if (!crossings[start].entering || w.used[start]) continue;
-    std::size_t at = start;
-    do {
-      // Entering at `at`: along S to the next crossing, which leaves C.
-      w.used[at] = 1;
-      const Crossing& in = crossings[at];
-      const std::size_t leaveAt = (at + 1) % kCount;
-      const Crossing& leave = crossings[leaveAt];
-      if (leave.entering) return false;
-      w.points.push_back(in.x);
-      int steps = (leave.edge - in.edge + n) % n;
-      if (steps == 0 && leaveAt <= at) steps = n;  // round the whole ring on one edge
-      for (int t = 1; t <= steps; ++t) w.points.emplace_back(s[(in.edge + t) % n]);
-      w.points.push_back(leave.x);
-      // Along C from the leaving crossing to the next crossing on C, which enters.
-      const std::size_t rank = std::size_t(rankOnC[leaveAt]);
-      const std::size_t nextRank = (rank + 1) % kCount;
-      const std::size_t enterAt = std::size_t(alongC[nextRank]);
-      const Crossing& enter = crossings[enterAt];
-      if (!enter.entering) return false;
-      int corners = (enter.side - leave.side + m) % m;
-      if (corners == 0 && nextRank <= rank) corners = m;
-      for (int t = 1; t <= corners; ++t) w.points.emplace_back(c[(leave.side + t) % m]);
-      at = enterAt;
-    } while (at != start);
-    w.ringStart.push_back(w.points.size());
-  }
+  if (w.crossings.size() % 2 != 0) return false;
+  w.crossStart.assign({0, int(w.crossings.size())});
+  if (!walkCrossings(
+          c, [&](int) { return s; }, [](int, int) {}, w))
+    return false;
   out = emit(w, grid);
+  return true;
+}
+
+bool intersectSimpleRingsConvex(const Rings& rings, FillRule rule,
+                                const std::vector<IPoint>& convex, int convexOrientation,
+                                const Grid& grid, ChainScratch& chains, WeilerScratch& w,
+                                PolygonSet& out) {
+  out = {};
+  if (convex.size() > std::size_t(kMaxSides)) return false;
+  nestSimpleRings(rings, rule, chains);
+  const std::vector<RingNesting>& rn = chains.nesting;
+  const SideLines sides(convex, convexOrientation);
+  const unsigned all = sides.all();
+  const CcwRing c{&convex, convexOrientation < 0};
+  const std::size_t ringCount = rings.size();
+  // Each ring of the result's boundary with the filled side on its left (outer rings
+  // counter-clockwise, holes clockwise).
+  const auto ringAt = [&](int r) {
+    const RingNesting& ring = rn[std::size_t(r)];
+    return CcwRing{&rings[std::size_t(r)], ring.lowest.ccw != ring.filledInside};
+  };
+  // Where each lies: across C's boundary (its crossings from w.crossStart[r]), inside C, or
+  // outside it (left out).
+  enum : char { kOutside, kInside, kAcross };
+  std::vector<char>& place = w.place;
+  place.assign(ringCount, kOutside);
+  w.crossings.clear();
+  w.crossStart.assign(ringCount + 1, 0);
+  for (std::size_t r = 0; r < ringCount; ++r) {
+    w.crossStart[r] = int(w.crossings.size());
+    if (!rn[r].inResult) continue;
+    const CcwRing s = ringAt(int(r));
+    unsigned anyOn = 0;
+    if (classifyVertices(s, sides, w, anyOn) != all) continue;  // outside a side line
+    if (anyOn != 0) {
+      bool onBoundary = false, everyInClosed = true;
+      boundaryVertices(w, all, std::size_t(s.size()), onBoundary, everyInClosed);
+      if (onBoundary) return false;
+    }
+    if (!appendCrossings(s, int(r), c, all, w)) return false;
+    const std::size_t count = w.crossings.size() - std::size_t(w.crossStart[r]);
+    if (count % 2 != 0) return false;
+    if (count > 0) {
+      place[r] = kAcross;
+    } else if (w.left[0] == all) {
+      place[r] = kInside;
+    } else if (insideRing(s, c[0])) {
+      return false;  // around C: the general path
+    }
+  }
+  w.crossStart[ringCount] = int(w.crossings.size());
+
+  // The walked rings are outer rings (each runs along C somewhere). For each ring across C that
+  // bounds an outer ring's face (the outer ring itself, or one of its holes), the walked ring it
+  // runs along: one, else -2.
+  std::vector<int>& walkedOf = w.walkedOf;
+  walkedOf.assign(ringCount, -1);
+  const auto faceOf = [&](int r) {
+    return rn[std::size_t(r)].filledInside ? r : rn[std::size_t(r)].resultAround;
+  };
+  const auto piece = [&](int t, int r) {
+    const int face = faceOf(r);
+    if (face < 0) return;  // no outer ring around a hole: its holes find none (below)
+    int& f = walkedOf[std::size_t(face)];
+    f = f == -1 || f == t ? t : -2;
+  };
+  if (!w.crossings.empty() && !walkCrossings(c, ringAt, piece, w)) return false;
+
+  // Polygons: the walked rings and the outer rings inside C, by their smallest vertices.
+  struct Entry {
+    XPoint key;
+    int walked;  // the walked ring, or -1
+    int ring;    // the ring inside C, or -1
+  };
+  std::vector<Entry> polygons;
+  const std::size_t walkedCount = w.crossings.empty() ? 0 : w.ringStart.size() - 1;
+  w.lowest.clear();
+  for (std::size_t t = 0; t < walkedCount; ++t) {
+    w.lowest.push_back(lowestOf(w, t));
+    polygons.push_back({w.points[w.lowest.back()], int(t), -1});
+  }
+  for (std::size_t r = 0; r < ringCount; ++r) {
+    if (place[r] == kInside && rn[r].filledInside) {
+      polygons.push_back({XPoint(rings[r][rn[r].lowest.index]), -1, int(r)});
+    }
+  }
+  std::sort(polygons.begin(), polygons.end(),
+            [](const Entry& a, const Entry& b) { return lessInBox(a.key, b.key); });
+  std::vector<int>& polygonOf = w.polygonOf;  // by walked ring, then by ring
+  polygonOf.assign(walkedCount + ringCount, -1);
+  for (std::size_t i = 0; i < polygons.size(); ++i) {
+    const Entry& e = polygons[i];
+    polygonOf[e.walked >= 0 ? std::size_t(e.walked) : walkedCount + std::size_t(e.ring)] = int(i);
+  }
+  // Holes inside C: in their outer ring's polygon, or in the one walked ring along that outer
+  // ring's face.
+  std::vector<std::pair<int, int>>& holes = w.holes;  // (polygon, ring)
+  holes.clear();
+  for (std::size_t r = 0; r < ringCount; ++r) {
+    if (place[r] != kInside || rn[r].filledInside) continue;
+    const int outer = rn[r].resultAround;
+    if (outer < 0) return false;
+    int polygon = -1;
+    if (place[std::size_t(outer)] == kInside) {
+      polygon = polygonOf[walkedCount + std::size_t(outer)];
+    } else if (place[std::size_t(outer)] == kAcross && walkedOf[std::size_t(outer)] >= 0) {
+      polygon = polygonOf[std::size_t(walkedOf[std::size_t(outer)])];
+    }
+    if (polygon < 0) return false;  // several walked rings may hold it: the general path
+    polygonOf[walkedCount + r] = polygon;
+    holes.emplace_back(polygon, int(r));
+  }
+  std::sort(holes.begin(), holes.end(), [&](const auto& a, const auto& b) {
+    if (a.first != b.first) return a.first < b.first;
+    return rings[std::size_t(a.second)][rn[std::size_t(a.second)].lowest.index] <
+           rings[std::size_t(b.second)][rn[std::size_t(b.second)].lowest.index];
+  });
+
+  const OutputFrame frame(grid);
+  PolygonSet result;
+  result.polygons.resize(polygons.size());
+  for (std::size_t i = 0; i < polygons.size(); ++i) {
+    const Entry& e = polygons[i];
+    Polygon& polygon = result.polygons[i];
+    if (e.walked >= 0) {
+      polygon.outer = walkedPath(w, std::size_t(e.walked), w.lowest[std::size_t(e.walked)], frame);
+    } else {
+      const RingNesting& ring = rn[std::size_t(e.ring)];
+      polygon.outer = simpleRingPath(rings[std::size_t(e.ring)], ring.lowest, false, frame);
+    }
+    if (polygon.outer.size() < 3) return false;  // rounding collapsed it: the general path
+  }
+  std::vector<int>& holeIndex = w.holeIndex;  // by ring
+  holeIndex.assign(ringCount, -1);
+  for (const auto& [p, r] : holes) {
+    Polygon& polygon = result.polygons[std::size_t(p)];
+    holeIndex[std::size_t(r)] = int(polygon.holes.size());
+    polygon.holes.push_back(
+        simpleRingPath(rings[std::size_t(r)], rn[std::size_t(r)].lowest, true, frame));
+    if (polygon.holes.back().size() < 3) return false;
+  }
+  // Outer rings inside a hole inside C lie in that hole; inside a hole across C, at the top.
+  for (const Entry& e : polygons) {
+    if (e.ring < 0) continue;
+    const int hole = rn[std::size_t(e.ring)].resultAround;
+    if (hole < 0 || place[std::size_t(hole)] != kInside) continue;
+    Polygon& polygon = result.polygons[std::size_t(polygonOf[walkedCount + std::size_t(e.ring)])];
+    polygon.parent = polygonOf[walkedCount + std::size_t(hole)];
+    polygon.parentHole = holeIndex[std::size_t(hole)];
+  }
+  out = std::move(result);
   return true;
 }
 

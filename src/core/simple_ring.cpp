@@ -334,13 +334,8 @@ bool turnsOnce(const std::vector<IPoint>& ring) {
   return turns == 1 || turns == -1;
 }
 
-namespace {
-
-// A simple ring's output path, as stages 1 to 4 trace it with the filled side on the left and
-// emit it reversed: an outer ring traced from its smallest vertex, a hole from the other end of
-// its lower edge there (where the trace of its lowest piece starts).
-Path ringPath(const std::vector<IPoint>& ring, LowestVertex lowest, bool hole,
-              const OutputFrame& frame) {
+Path simpleRingPath(const std::vector<IPoint>& ring, LowestVertex lowest, bool hole,
+                    const OutputFrame& frame) {
   const std::size_t n = ring.size(), first = lowest.index;
   const bool forward = lowest.ccw != hole;  // the ring's order has the filled side on the left
   // Vertex t steps along the filled-left order from the smallest one; output index k takes
@@ -354,8 +349,6 @@ Path ringPath(const std::vector<IPoint>& ring, LowestVertex lowest, bool hole,
   });
 }
 
-}  // namespace
-
 bool ringIsSimple(const std::vector<IPoint>& ring, ChainScratch& scratch, bool turnsChecked) {
   return (turnsChecked || turnsOnce(ring)) && ChainSweep(&ring, 1, scratch, nullptr).run();
 }
@@ -367,13 +360,10 @@ bool ringsAreSimple(const Rings& rings, ChainScratch& scratch) {
   return ChainSweep(rings.data(), rings.size(), scratch, &scratch.below).run();
 }
 
-PolygonSet simpleRingsRegion(const Rings& rings, FillRule rule, ChainScratch& scratch,
-                             const Grid& grid) {
+void nestSimpleRings(const Rings& rings, FillRule rule, ChainScratch& scratch) {
   std::vector<RingNesting>& rn = scratch.nesting;
   rn.assign(rings.size(), RingNesting{});
   for (std::size_t r = 0; r < rings.size(); ++r) rn[r].lowest = lowestVertex(rings[r]);
-  const OutputFrame frame(grid);
-  PolygonSet result;
   // In the order the sweep reached the rings (their smallest vertices in lexicographic order,
   // the order stages 1 to 4 emit them in). The chain just below a ring's smallest vertex
   // belongs to the innermost ring around it when that ring's inside lies above the chain, else
@@ -394,6 +384,17 @@ PolygonSet simpleRingsRegion(const Rings& rings, FillRule rule, ChainScratch& sc
     ring.resultAround = around == nullptr  ? -1
                         : around->inResult ? ring.around
                                            : around->resultAround;
+  }
+}
+
+PolygonSet simpleRingsRegion(const Rings& rings, FillRule rule, ChainScratch& scratch,
+                             const Grid& grid) {
+  nestSimpleRings(rings, rule, scratch);
+  std::vector<RingNesting>& rn = scratch.nesting;
+  const OutputFrame frame(grid);
+  PolygonSet result;
+  for (const int r : scratch.reached) {
+    RingNesting& ring = rn[std::size_t(r)];
     if (!ring.inResult) continue;
     // An outer ring's owner is the hole it lies in; a hole's, its outer ring.
     const int owner = ring.resultAround;
@@ -405,7 +406,7 @@ PolygonSet simpleRingsRegion(const Rings& rings, FillRule rule, ChainScratch& sc
     if (hole && (owner < 0 || rn[std::size_t(owner)].polygon < 0)) {
       throw InternalError("simpleRingsRegion: hole without an outer ring");
     }
-    Path path = ringPath(rings[std::size_t(r)], ring.lowest, hole, frame);
+    Path path = simpleRingPath(rings[std::size_t(r)], ring.lowest, hole, frame);
     if (path.size() < 3) {
       ring.dropped = true;
       continue;
@@ -432,7 +433,7 @@ PolygonSet simpleRingRegion(const std::vector<IPoint>& ring, FillRule rule, cons
   const LowestVertex lowest = lowestVertex(ring);
   PolygonSet result;
   if (!isFilled(rule, lowest.ccw ? 1 : -1)) return result;
-  Path path = ringPath(ring, lowest, /*hole=*/false, OutputFrame(grid));
+  Path path = simpleRingPath(ring, lowest, /*hole=*/false, OutputFrame(grid));
   if (path.size() < 3) return result;  // distinct grid points that round to fewer doubles
   result.polygons.emplace_back().outer = std::move(path);
   return result;

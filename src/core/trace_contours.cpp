@@ -203,9 +203,9 @@ Contours traceContours(const Arrangement& arrangement, TraceScratch& scratch) {
         const int inMin = stackE[k + (minAt + n - 1) % n];
         const int outMin = stackE[k + minAt];
         const auto kept = result.vertices.begin() + std::ptrdiff_t(firstVertex);
-        auto start = result.vertices.begin() + std::ptrdiff_t(minKeptAt);
-        if (inMin < outMin) start = start == kept ? result.vertices.end() - 1 : start - 1;
-        std::rotate(kept, start, result.vertices.end());
+        auto startAt = result.vertices.begin() + std::ptrdiff_t(minKeptAt);
+        if (inMin < outMin) startAt = startAt == kept ? result.vertices.end() - 1 : startAt - 1;
+        std::rotate(kept, startAt, result.vertices.end());
         ring.vertices = {result.vertices.data() + firstVertex,
                          result.vertices.size() - firstVertex};
         ring.referencePiece = std::min(inMin, outMin);

@@ -11,6 +11,7 @@
 #include <deque>
 #include <memory>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 #include <boost/intrusive/set.hpp>
@@ -125,6 +126,7 @@ struct BoundaryCrossing {
   XPoint x;
   int edge = 0;  ///< the simple ring's edge it lies on (counter-clockwise index)
   int side = 0;  ///< the convex ring's side it lies on (counter-clockwise index)
+  int ring = 0;  ///< the ring of a set it lies on
   bool entering = false;
 };
 /// The working arrays of intersectSimpleConvex(): the sides of each vertex, the crossings in
@@ -137,11 +139,22 @@ struct WeilerScratch {
   std::vector<XPoint> points;
   std::vector<std::size_t> ringStart;  ///< where each ring's points begin, and the end
   std::vector<std::size_t> order, lowest;
+  // Sets of rings: where each ring's crossings begin (and the end), where each ring lies, the
+  // walked ring along each outer ring's face, polygon and hole indices, holes by polygon.
+  std::vector<int> crossStart, walkedOf, polygonOf, holeIndex;
+  std::vector<char> place;
+  std::vector<std::pair<int, int>> holes;
   template <class F>
   void forEach(F f) {
     f(left);
     f(onLine);
     f(crossings);
+    f(crossStart);
+    f(walkedOf);
+    f(polygonOf);
+    f(holeIndex);
+    f(place);
+    f(holes);
     f(alongC);
     f(rankOnC);
     f(used);

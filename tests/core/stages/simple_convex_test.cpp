@@ -207,3 +207,106 @@ TEST(StageSimpleConvex, RandomRingsMatchTheGeneralPath) {
 
 }  // namespace
 }  // namespace roiclip
+
+namespace roiclip {
+namespace {
+
+// Weiler-Atherton over a set of rings that touch nothing (intersectSimpleRingsConvex()): whether
+// it takes the case, and if so that it gives the general path's result; intersect() must give it
+// either way.
+bool checkSet(const Paths& set, const Path& c, FillRule rule, const std::string& what) {
+  testing::expectSameSet(intersect(set, {c}, rule), stages::generalIntersect(set, {c}, rule, rule),
+                         what + ", intersect()");
+  const Grid grid = resolveGrid(Options{}.grid, set, Paths{c});
+  const detail::Rings rs = detail::snapRings(set, 0, grid);
+  const detail::Rings rc = detail::snapRings({c}, 1, grid);
+  const int orientation = detail::convexOrientation(rc[0]);
+  detail::Workspace ws;
+  if (orientation == 0 || !detail::ringsAreSimple(rs, ws.chains)) return false;
+  PolygonSet direct;
+  if (!detail::intersectSimpleRingsConvex(rs, rule, rc[0], orientation, grid, ws.chains, ws.weiler,
+                                          direct)) {
+    return false;
+  }
+  testing::expectSameSet(direct, stages::generalIntersect(set, {c}, rule, FillRule::NonZero),
+                         what + ", Weiler-Atherton over the set");
+  return true;
+}
+
+Path reversed(Path p) {
+  std::reverse(p.begin(), p.end());
+  return p;
+}
+
+TEST(StageSimpleConvex, SetsAcrossTheConvexRingWalkEveryBoundaryRing) {
+  const Path roi = box(0, 0, 100, 100);
+  // A tag across the ROI's corner: its square crosses two sides, its inner squares lie inside
+  // (holes, one with an island), one hole crosses a side too.
+  const Paths tag = {box(70, 70, 110, 110), reversed(box(75, 75, 85, 85)),
+                     reversed(box(88, 75, 96, 85)), box(90, 78, 94, 82),
+                     reversed(box(75, 95, 85, 105))};
+  // Two contours across opposite sides, each with a hole inside the ROI, and one inside.
+  const Paths pair = {{{-10, 10}, {30, 12}, {28, 40}, {-10, 38}},
+                      reversed(box(5, 20, 15, 30)),
+                      {{60, -10}, {80, -10}, {82, 30}, {58, 30}},
+                      reversed(box(65, 5, 75, 15)),
+                      box(40, 45, 50, 55)};
+  for (FillRule rule : kRules) {
+    EXPECT_TRUE(checkSet(tag, roi, rule, "tag across a corner"));
+    EXPECT_TRUE(checkSet(pair, roi, rule, "contours across two sides"));
+  }
+  // The same orientation nested (non-zero fills through, even-odd makes a hole).
+  const Paths sameWay = {{{-10, 10}, {50, 10}, {50, 60}, {-10, 60}}, box(10, 20, 30, 40)};
+  EXPECT_TRUE(checkSet(sameWay, roi, FillRule::NonZero, "same way, non-zero"));
+  EXPECT_TRUE(checkSet(sameWay, roi, FillRule::EvenOdd, "same way, even-odd"));
+}
+
+TEST(StageSimpleConvex, SetsThatNeedMoreGoToTheGeneralPath) {
+  const Path roi = box(0, 0, 100, 100);
+  // A hole crossing the ROI cuts its outer contour's part into two; a hole inside could lie in
+  // either: no point test, the general path.
+  const Paths cut = {box(-10, 20, 110, 80), reversed(box(40, -20, 60, 120)),
+                     reversed(box(10, 40, 20, 50))};
+  // A contour around the whole ROI with a hole across it.
+  const Paths around = {box(-50, -50, 150, 150), reversed(box(50, -20, 60, 120))};
+  // A vertex on the ROI's boundary, of a contour across it.
+  const Paths onSide = {{{50, 0}, {60, -10}, {70, 20}}, {{20, -10}, {30, 10}, {10, 10}}};
+  for (FillRule rule : {FillRule::EvenOdd, FillRule::NonZero}) {
+    EXPECT_FALSE(checkSet(cut, roi, rule, "hole in one of two parts"));
+    EXPECT_FALSE(checkSet(around, roi, rule, "around the ROI"));
+    EXPECT_FALSE(checkSet(onSide, roi, rule, "vertex on a side"));
+  }
+}
+
+// Random sets of concentric star-shaped rings (outer, hole, island, each way round) in a 3 x 3
+// layout against random convex hulls over part of it, under four rules.
+TEST(StageSimpleConvex, RandomSetsAcrossTheConvexRingMatchTheGeneralPath) {
+  std::mt19937 rng(20261203);
+  int taken = 0, total = 0;
+  for (int trial = 0; trial < 300; ++trial) {
+    Paths set;
+    for (int cell = 0; cell < 9; ++cell) {
+      const Point centre(100.0 * (cell % 3) + 100, 100.0 * (cell / 3) + 100);
+      const double radii[] = {45, 25, 10};
+      for (int level = 0; level < 1 + int(rng() % 3); ++level) {
+        Path ring = stages::starShapedRing(rng, 12 + int(rng() % 14), centre, radii[level], 0.75);
+        if (rng() % 2 == 0) std::reverse(ring.begin(), ring.end());
+        set.push_back(ring);
+      }
+    }
+    std::vector<Point> corners;
+    for (int i = 0; i < 3 + int(rng() % 6); ++i) {
+      corners.emplace_back(std::round(std::uniform_real_distribution<double>(30, 370)(rng)),
+                           std::round(std::uniform_real_distribution<double>(30, 370)(rng)));
+    }
+    const Path roi = testing::convexHull({Path(corners.begin(), corners.end())}, trial % 2 == 1)[0];
+    if (roi.size() < 3) continue;
+    taken += checkSet(set, roi, kRules[trial % 4], "trial " + std::to_string(trial)) ? 1 : 0;
+    ++total;
+  }
+  EXPECT_GT(taken, total / 3);  // the walk over the set took many of them
+  EXPECT_LT(taken, total);      // and left some to the general path
+}
+
+}  // namespace
+}  // namespace roiclip
