@@ -54,15 +54,17 @@ unsigned classifyVertices(const CcwRing& s, const SideLines& sides, WeilerScratc
   return anyLeft;
 }
 
-// Whether some vertex classified by classifyVertices() lies on C's boundary, and whether every
-// vertex lies in C or on its boundary.
+// Whether some vertex classified by classifyVertices() lies on C's boundary, whether one lies at
+// a corner of C, and whether every vertex lies in C or on its boundary.
 void boundaryVertices(const WeilerScratch& w, unsigned all, std::size_t n, bool& onBoundary,
-                      bool& everyInClosed) {
+                      bool& atCorner, bool& everyInClosed) {
   onBoundary = false;
+  atCorner = false;
   everyInClosed = true;
   for (std::size_t k = 0; k < n; ++k) {
     const bool inClosed = (w.left[k] | w.onLine[k]) == all;
     onBoundary = onBoundary || (w.onLine[k] != 0 && inClosed);
+    atCorner = atCorner || (inClosed && (w.onLine[k] & (w.onLine[k] - 1)) != 0);
     everyInClosed = everyInClosed && inClosed;
   }
 }
@@ -115,9 +117,12 @@ bool walkCrossings(const CcwRing& c, RingAt ringAt, Piece piece, WeilerScratch& 
   std::vector<int>& alongC = w.alongC;
   alongC.resize(kCount);
   for (std::size_t i = 0; i < kCount; ++i) alongC[i] = int(i);
+  // Two crossings at one point are a vertex of a ring that touches C's side from inside: it
+  // leaves C there, then enters again, so the leaving one comes first.
   std::sort(alongC.begin(), alongC.end(), [&](int u, int v) {
     const Crossing &a = crossings[std::size_t(u)], &b = crossings[std::size_t(v)];
     if (a.side != b.side) return a.side < b.side;
+    if (equalInBox(a.x, b.x)) return !a.entering && b.entering;
     return beforeAlong(c[a.side], c[(a.side + 1) % m], a.x, b.x);
   });
   std::vector<int>& rankOnC = w.rankOnC;
@@ -143,7 +148,10 @@ bool walkCrossings(const CcwRing& c, RingAt ringAt, Piece piece, WeilerScratch& 
       const Crossing& leave = crossings[leaveAt];
       if (leave.entering) return false;
       piece(t, in.ring);
-      w.points.push_back(in.x);
+      // Entering where it just left (a touch from inside): the point once.
+      if (w.points.size() == w.ringStart.back() || !equalInBox(w.points.back(), in.x)) {
+        w.points.push_back(in.x);
+      }
       int steps = (leave.edge - in.edge + n) % n;
       if (steps == 0 && leaveAt <= at) steps = n;  // round the whole ring on one edge
       for (int k = 1; k <= steps; ++k) w.points.emplace_back(s[(in.edge + k) % n]);
@@ -159,6 +167,7 @@ bool walkCrossings(const CcwRing& c, RingAt ringAt, Piece piece, WeilerScratch& 
       for (int k = 1; k <= corners; ++k) w.points.emplace_back(c[(leave.side + k) % m]);
       at = enterAt;
     } while (at != start);
+    if (equalInBox(w.points.back(), w.points[w.ringStart.back()])) w.points.pop_back();
     w.ringStart.push_back(w.points.size());
   }
   return true;
@@ -251,15 +260,20 @@ bool intersectSimpleConvex(const std::vector<IPoint>& ring, FillRule rule,
   // and so does every point it winds around, simple or not. Nothing of it is in C.
   if (classifyVertices(s, sides, w, anyOn) != all) return true;
   if (anyOn != 0) {
-    bool onBoundary = false, everyInClosed = true;
-    boundaryVertices(w, all, std::size_t(n), onBoundary, everyInClosed);
-    if (onBoundary) {
+    bool onBoundary = false, atCorner = false, everyInClosed = true;
+    boundaryVertices(w, all, std::size_t(n), onBoundary, atCorner, everyInClosed);
+    if (onBoundary && everyInClosed) {
       // A simple ring in C that touches its boundary (a tag's square at a corner of the ROI):
-      // it fills what it fills. Crossing C there: the general path.
-      if (!everyInClosed || !ringIsSimple(ring, chains, /*turnsChecked=*/true)) return false;
+      // it fills what it fills.
+      if (!ringIsSimple(ring, chains, /*turnsChecked=*/true)) return false;
       out = simpleRingRegion(ring, rule, grid);
       return true;
     }
+    // A vertex on a side, of a ring across C: near it C is that side's half-plane, so each edge
+    // at it lies inside or outside by its other end. One edge in, one out: a crossing at the
+    // vertex (found on the edge that reaches the side's line); both in: a touch from inside,
+    // leaving and entering there. At a corner: the general path.
+    if (atCorner) return false;
   }
   if (!ringIsSimple(ring, chains, /*turnsChecked=*/true)) return false;
   if (!isFilled(rule, ccw ? 1 : -1)) return true;  // S fills nothing under its rule
@@ -315,8 +329,8 @@ bool intersectSimpleRingsConvex(const Rings& rings, FillRule rule,
     unsigned anyOn = 0;
     if (classifyVertices(s, sides, w, anyOn) != all) continue;  // outside a side line
     if (anyOn != 0) {
-      bool onBoundary = false, everyInClosed = true;
-      boundaryVertices(w, all, std::size_t(s.size()), onBoundary, everyInClosed);
+      bool onBoundary = false, atCorner = false, everyInClosed = true;
+      boundaryVertices(w, all, std::size_t(s.size()), onBoundary, atCorner, everyInClosed);
       if (onBoundary) return false;
     }
     if (!appendCrossings(s, int(r), c, all, w)) return false;

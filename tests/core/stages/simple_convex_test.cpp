@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <random>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <roiclip/roiclip.hpp>
@@ -108,14 +109,69 @@ TEST(StageSimpleConvex, ARingOutsideOneSideLineGivesNothingSimpleOrNot) {
 
 TEST(StageSimpleConvex, VerticesOnTheBoundaryGoToTheGeneralPath) {
   const Path square = box(0, 0, 10, 10);
-  // A vertex on a side of a ring that crosses the square, an edge along a side's line outside
-  // the side, an edge through a corner: all resolved by the general path (checkCase compares
+  // An edge along a side's line outside the side, an edge through a corner, a vertex at a corner
+  // of a ring across the square: all resolved by the general path (checkCase compares
   // intersect()).
-  EXPECT_FALSE(checkCase({{5, 0}, {12, 5}, {5, 12}}, square, FillRule::NonZero, "vertex on side"));
+  EXPECT_FALSE(checkCase({{0, 0}, {5, -5}, {5, 5}}, square, FillRule::NonZero, "at a corner"));
   EXPECT_FALSE(checkCase({{12, 0}, {15, 0}, {5, 5}}, square, FillRule::NonZero, "on a line"));
   EXPECT_FALSE(checkCase({{-2, -2}, {12, 12}, {-2, 12}}, square, FillRule::NonZero, "corner"));
   // Outside the square along one side: nothing, taken.
   EXPECT_TRUE(checkCase({{2, 0}, {8, 0}, {5, -5}}, square, FillRule::NonZero, "along a side"));
+}
+
+// A ring across the convex ring with vertices on its sides: crossing there, touching from inside
+// (leaving and entering at one point) or from outside. Taken, as the general path gives it.
+TEST(StageSimpleConvex, VerticesOnSidesOfARingAcrossTheConvexRing) {
+  const Path square = box(0, 0, 10, 10);
+  const std::pair<Path, const char*> cases[] = {
+      {{{5, 0}, {12, 5}, {5, 12}}, "touching inside at one, crossing elsewhere"},
+      {{{5, 0}, {5, -5}, {12, 5}}, "crossing at a vertex"},
+      {{{5, -5}, {5, 0}, {12, 5}, {-3, 5}}, "a vertex on the side, both ways"},
+      {{{5, 0}, {8, 4}, {12, 0}, {12, 12}, {-2, 12}, {-2, 0}, {2, 4}}, "two touches from inside"},
+      {{{-5, -5}, {15, -5}, {15, 15}, {5, 10}, {-5, 15}}, "around it, touching from outside"},
+      {{{5, 10}, {3, 15}, {-5, 5}, {3, -5}, {5, 0}, {7, -5}, {15, 5}, {7, 15}}, "touching at two"},
+  };
+  // A slot whose tip touches a side from inside: two parts of the result meet at the tip, which
+  // the walk does not split; whichever path takes it, intersect() must match the general path.
+  const Path slot = {{-5, -5}, {15, -5}, {15, 15}, {7, 15}, {7, 3},
+                     {5, 0},   {3, 3},   {3, 15},  {-5, 15}};
+  for (FillRule rule : kRules) {
+    for (const auto& [ring, what] : cases) {
+      EXPECT_TRUE(checkCase(ring, square, rule, what)) << what;
+    }
+    checkCase(slot, square, rule, "a slot's tip on a side");
+  }
+}
+
+// Coarse random rings against coarse random hulls: many vertices on the hull's sides.
+TEST(StageSimpleConvex, RandomRingsWithVerticesOnTheSidesMatchTheGeneralPath) {
+  std::mt19937 rng(20261204);
+  int takenOnBoundary = 0;
+  for (int trial = 0; trial < 3000; ++trial) {
+    const Path s = stages::starShapedRing(rng, 3 + int(rng() % 12), {4, 4}, 4, 0.3);
+    Path c = box(0, 0, 1 + double(rng() % 8), 1 + double(rng() % 8));
+    if (trial % 2 == 1) {
+      std::vector<Point> points;
+      for (int i = 0; i < 3 + int(rng() % 5); ++i) {
+        points.emplace_back(double(rng() % 9), double(rng() % 9));
+      }
+      c = testing::convexHull({points}, trial % 4 == 1)[0];
+      if (c.size() < 3) continue;
+    }
+    const bool onSide = std::any_of(s.begin(), s.end(), [&](const Point& p) {
+      for (std::size_t j = 0; j < c.size(); ++j) {
+        const Point a = c[j], b = c[(j + 1) % c.size()];
+        if ((b.x - a.x) * (p.y - a.y) == (b.y - a.y) * (p.x - a.x) && std::min(a.x, b.x) <= p.x &&
+            p.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= p.y && p.y <= std::max(a.y, b.y)) {
+          return true;
+        }
+      }
+      return false;
+    });
+    const bool taken = checkCase(s, c, kRules[trial % 4], "trial " + std::to_string(trial));
+    takenOnBoundary += taken && onSide ? 1 : 0;
+  }
+  EXPECT_GT(takenOnBoundary, 300);
 }
 
 // A simple ring inside the convex ring that touches its boundary (a tag's square at a corner of
