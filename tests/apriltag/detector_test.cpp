@@ -528,7 +528,8 @@ void drawTag(cv::Mat& frame, int id, double side, double degrees, cv::Point2d ce
   const double cell = side / (tag.cols - 2);  // the rendered tag has one white cell each side
   cv::Mat big;
   cv::resize(tag, big, cv::Size(), cell, cell, cv::INTER_NEAREST);
-  cv::Mat m = cv::getRotationMatrix2D(cv::Point2f(big.cols / 2.0f, big.rows / 2.0f), degrees, 1.0);
+  cv::Mat m = cv::getRotationMatrix2D(cv::Point2f(float(big.cols) / 2.0f, float(big.rows) / 2.0f),
+                                      degrees, 1.0);
   m.at<double>(0, 2) += centre.x - big.cols / 2.0;
   m.at<double>(1, 2) += centre.y - big.rows / 2.0;
   cv::Mat warped, mask;

@@ -51,7 +51,9 @@ cv::Mat decodeRle(const std::vector<std::int64_t>& counts, cv::Size size) {
   std::int64_t at = 0;
   for (std::size_t i = 0; i < counts.size(); ++i) {
     EXPECT_GE(counts[i], 0);
-    if (i > 0) EXPECT_GT(counts[i], 0) << "run " << i << " is empty";
+    if (i > 0) {
+      EXPECT_GT(counts[i], 0) << "run " << i << " is empty";
+    }
     if (i % 2 == 1) {
       for (std::int64_t k = at; k < at + counts[i]; ++k) {
         mask.at<std::uint8_t>(static_cast<int>(k % size.height),
@@ -215,7 +217,9 @@ TEST(Outputs, UncheckedImagesHaveNullIouAndEveryStageIsTimed) {
     // The stages cover the image: what they leave out is glue (checks, moves), well under 10 %.
     EXPECT_LE(sum, t["total"].get<double>() * (1 + 1e-9));
     EXPECT_GE(sum, 0.9 * t["total"].get<double>() - 1e-3);
-    if (row["status"] != "failed") EXPECT_GT(t["read"].get<double>(), 0.0);
+    if (row["status"] != "failed") {
+      EXPECT_GT(t["read"].get<double>(), 0.0);
+    }
     if (ok) {
       EXPECT_GT(t["overlay"].get<double>(), 0.0);
       EXPECT_GT(t["write"].get<double>(), 0.0);

@@ -61,7 +61,7 @@ TEST(BatchOverlay, CaptionIsABandAboveTheImage) {
   const cv::Mat bandPixels = overlay.rowRange(0, band);
   cv::Mat gray;
   cv::cvtColor(bandPixels, gray, cv::COLOR_BGR2GRAY);
-  EXPECT_GT(cv::countNonZero(gray == 0), static_cast<int>(0.8 * gray.total()));
+  EXPECT_GT(cv::countNonZero(gray == 0), static_cast<int>(0.8 * double(gray.total())));
   EXPECT_LT(cv::countNonZero(gray == 0), static_cast<int>(gray.total()));  // some text
   for (int x = 0; x < image.cols; x += 50) {
     EXPECT_NEAR(overlay.at<cv::Vec3b>(band, x)[1], 0.35 * image.at<uchar>(0, x), 1.0) << x;

@@ -92,7 +92,9 @@ void expectWithin(i128 v) {
   const u128 error = g > magnitude ? g - magnitude : magnitude - g;
   EXPECT_LE(error, (magnitude >> 53) + (magnitude >> 62))
       << "high " << std::uint64_t(u128(v) >> 64) << " low " << std::uint64_t(v);
-  if (v == i128(std::int64_t(v))) EXPECT_EQ(bitsOf(got), bitsOf(toDouble(v)));
+  if (v == i128(std::int64_t(v))) {
+    EXPECT_EQ(bitsOf(got), bitsOf(toDouble(v)));
+  }
 }
 
 TEST(ToDoubleWithin, ErrorBoundOnEdgesHalfwayCasesAndRandomValues) {
