@@ -55,7 +55,8 @@ enum class Place {
 };
 
 // Where a ring lies relative to C; for a ring apart from C, `winding` is its winding number
-// around C.
+// around C. kSides as SideLines::classify().
+template <int kSides>
 Place placeOf(const std::vector<IPoint>& ring, const SideLines& sides, const CcwRing& c,
               int& winding) {
   winding = 0;
@@ -64,7 +65,7 @@ Place placeOf(const std::vector<IPoint>& ring, const SideLines& sides, const Ccw
   unsigned anyLeft = 0, allLeft = all;
   bool vertexInC = false;
   for (const IPoint p : ring) {
-    const auto [left, zeros] = sides.classify(p);
+    const auto [left, zeros] = sides.classify<kSides>(p);
     anyLeft |= left;
     allLeft &= left;
     vertexInC = vertexInC || (left | zeros) == all;
@@ -77,7 +78,7 @@ Place placeOf(const std::vector<IPoint>& ring, const SideLines& sides, const Ccw
   const std::size_t n = ring.size();
   for (std::size_t k = 0; k < n; ++k) {
     const IPoint p = ring[k], q = ring[(k + 1) % n];
-    const auto mp = sides.classify(p), mq = sides.classify(q);
+    const auto mp = sides.classify<kSides>(p), mq = sides.classify<kSides>(q);
     if (segmentMeetsConvex(p, q, all & ~(mp.left | mp.zeros), all & ~(mq.left | mq.zeros), c)) {
       return Place::Meets;
     }
@@ -153,9 +154,12 @@ bool groupRingsForConvex(const Rings& rings, const std::vector<IPoint>& convex,
   const CcwRing c{&convex, convexOrientation < 0};
   std::vector<RingBox> boxes;
   int windingAroundC = 0;
+  const auto place = [&](const std::vector<IPoint>& ring, int& winding) {
+    return withSideCount(sides, [&](auto k) { return placeOf<k()>(ring, sides, c, winding); });
+  };
   for (std::size_t r = 0; r < rings.size(); ++r) {
     int winding = 0;
-    if (placeOf(rings[r], sides, c, winding) == Place::Apart) {
+    if (place(rings[r], winding) == Place::Apart) {
       windingAroundC += winding;
       ++out.apart;
       continue;

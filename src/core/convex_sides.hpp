@@ -4,6 +4,8 @@
 #pragma once
 
 #include <cstdint>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "predicates.hpp"
@@ -43,9 +45,13 @@ struct SideLines {
     unsigned left = 0;   ///< bit j: strictly left of side j
     unsigned zeros = 0;  ///< bit j: on the line of side j
   };
+  /// kSides > 0: the number of sides known when compiling (m must equal it), for the loop over
+  /// a ring's vertices; 0: m.
+  template <int kSides = 0>
   [[nodiscard]] Masks classify(IPoint p) const {
+    const int count = kSides > 0 ? kSides : m;
     unsigned left = 0, zeros = 0;
-    for (int j = 0; j < m; ++j) {
+    for (int j = 0; j < count; ++j) {
       const std::int64_t l = dir[j].x * (p.y - start[j].y);
       const std::int64_t r = dir[j].y * (p.x - start[j].x);
       left |= unsigned(l > r) << j;
@@ -54,5 +60,21 @@ struct SideLines {
     return {left, zeros};
   }
 };
+
+/// The most sides for which withSideCount() compiles a loop of its own.
+constexpr int kUnrolledSides = 12;
+
+/// Calls f(std::integral_constant<int, k>{}) with k = sides.m for 3 to kUnrolledSides sides (a
+/// tag's quad, the hull of a few tags), so that classify<k>() unrolls its loop over the sides,
+/// and with k = 0 (classify() over m sides) for more.
+template <int kSides = 3, class F>
+decltype(auto) withSideCount(const SideLines& sides, F&& f) {
+  if constexpr (kSides > kUnrolledSides) {
+    return f(std::integral_constant<int, 0>{});
+  } else {
+    if (sides.m == kSides) return f(std::integral_constant<int, kSides>{});
+    return withSideCount<kSides + 1>(sides, std::forward<F>(f));
+  }
+}
 
 }  // namespace roiclip::detail

@@ -42,16 +42,8 @@ inline bool straightThrough(IPoint a, IPoint b, IPoint c) {
   return (b.x - a.x) * (c.x - b.x) > -((b.y - a.y) * (c.y - b.y));
 }
 
-// Drops vertices where a path goes straight on: the loop adds q to the kept points `ring`.
-inline void appendMerging(std::vector<IPoint>& ring, IPoint q) {
-  while (ring.size() >= 2 && straightThrough(ring[ring.size() - 2], ring.back(), q)) {
-    ring.pop_back();
-  }
-  ring.push_back(q);
-}
-
 // The straight-on vertices across the closing vertex of a ring whose other straight runs are
-// merged (appendMerging()).
+// merged (snapPoints<true>()).
 void mergeAcrossClose(std::vector<IPoint>& ring) {
   std::size_t begin = 0;
   bool changed = true;
@@ -104,13 +96,16 @@ struct FastSnap {
 };
 
 // Snap one path: validated grid points with consecutive repeats removed; with `merge`, also
-// the vertices where it goes straight on (appendMerging()).
+// the vertices where it goes straight on.
 template <bool kMerge>
 void snapPoints(const Path& path, std::size_t count, std::size_t pathIndex, Operand label,
                 const Grid& grid, std::vector<IPoint>& out) {
   const FastSnap fast(grid);
-  out.clear();
-  out.reserve(count);
+  // Written through a pointer into storage for every point (no capacity test per point), then
+  // cut to the points kept.
+  out.resize(count);
+  IPoint* const kept = out.data();
+  std::size_t n = 0;
   IPoint last{std::int64_t{1} << 62, 0};  // no snapped point
   for (std::size_t i = 0; i < count; ++i) {
     IPoint q;
@@ -120,12 +115,11 @@ void snapPoints(const Path& path, std::size_t count, std::size_t pathIndex, Oper
     }
     if (q == last) continue;
     last = q;
-    if (kMerge) {
-      appendMerging(out, q);
-    } else {
-      out.push_back(q);
-    }
+    // With kMerge, drop the vertices where the path goes straight on.
+    while (kMerge && n >= 2 && straightThrough(kept[n - 2], kept[n - 1], q)) --n;
+    kept[n++] = q;
   }
+  out.resize(n);
 }
 
 void snapPath(const Path& path, std::size_t pathIndex, Operand label, const Grid& grid,

@@ -37,21 +37,31 @@ bool beforeAlong(IPoint a, IPoint b, const XPoint& p, const XPoint& q) {
 // vertex on a side line outside C (on the line's extension: strictly right of another side) counts
 // as right of it; an edge from it crosses that line only there, outside the side. Returns the
 // sides some vertex lies strictly left of, and in `anyOn` the side lines some vertex lies on.
+template <int kSides>
+unsigned classifyEach(const CcwRing& s, const SideLines& sides, WeilerScratch& w, unsigned& anyOn) {
+  const std::size_t n = std::size_t(s.size());
+  const IPoint* points = s.ring->data();
+  unsigned* left = w.left.data();
+  unsigned* onLine = w.onLine.data();
+  unsigned anyLeft = 0, on = 0;
+  // Vertex i of the stored ring is vertex k of the counter-clockwise order.
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto [bits, zeros] = sides.classify<kSides>(points[i]);
+    const std::size_t k = s.reversed ? n - 1 - i : i;
+    left[k] = bits;
+    onLine[k] = zeros;
+    anyLeft |= bits;
+    on |= zeros;
+  }
+  anyOn = on;
+  return anyLeft;
+}
+
 unsigned classifyVertices(const CcwRing& s, const SideLines& sides, WeilerScratch& w,
                           unsigned& anyOn) {
-  const int n = s.size();
-  w.left.resize(std::size_t(n));
-  w.onLine.resize(std::size_t(n));
-  unsigned anyLeft = 0;
-  anyOn = 0;
-  for (int k = 0; k < n; ++k) {
-    const auto [bits, zeros] = sides.classify(s[k]);
-    w.left[std::size_t(k)] = bits;
-    w.onLine[std::size_t(k)] = zeros;
-    anyLeft |= bits;
-    anyOn |= zeros;
-  }
-  return anyLeft;
+  w.left.resize(std::size_t(s.size()));
+  w.onLine.resize(std::size_t(s.size()));
+  return withSideCount(sides, [&](auto k) { return classifyEach<k()>(s, sides, w, anyOn); });
 }
 
 // Whether some vertex classified by classifyVertices() lies on C's boundary, whether one lies at
@@ -232,13 +242,15 @@ bool ringsInsideConvex(const Rings& rings, const std::vector<IPoint>& convex,
                        int convexOrientation) {
   if (convex.size() > std::size_t(kMaxSides)) return false;
   const SideLines sides(convex, convexOrientation);
-  for (const std::vector<IPoint>& ring : rings) {
-    for (const IPoint& p : ring) {
-      const auto [left, zeros] = sides.classify(p);
-      if ((left | zeros) != sides.all()) return false;
+  return withSideCount(sides, [&](auto k) {
+    for (const std::vector<IPoint>& ring : rings) {
+      for (const IPoint& p : ring) {
+        const auto [left, zeros] = sides.classify<k()>(p);
+        if ((left | zeros) != sides.all()) return false;
+      }
     }
-  }
-  return true;
+    return true;
+  });
 }
 
 bool intersectSimpleConvex(const std::vector<IPoint>& ring, FillRule rule,

@@ -193,14 +193,13 @@ class ChainSweep {
   // Whether the current edges of two chains meet where a simple ring allows no contact.
   [[nodiscard]] bool conflict(const ChainNode* p, const ChainNode* q) const {
     if (p == nullptr || q == nullptr) return false;
-    // Consecutive ring edges (the first or last edges of two chains at their turning vertex)
-    // share that vertex; they may not overlap along it.
-    const int ep = p->step > 0 ? p->ia : p->ib, eq = q->step > 0 ? q->ia : q->ib;
-    if (p->ring == q->ring && (after(p->size, ep, 1) == eq || after(q->size, eq, 1) == ep)) {
-      const IPoint s = p->a == q->a || p->a == q->b ? p->a : p->b;
-      const IPoint u = p->a == s ? p->b : p->a, w = q->a == s ? q->b : q->a;
-      return orientInGrid(s, u, w) == 0;
-    }
+    // Consecutive ring edges that are current together are the first or last edges of two
+    // chains at their turning vertex: both start there (equal `a`) or both end there (equal
+    // `b`). They may not overlap along it. Two edges with an equal end that are not consecutive
+    // meet at two vertices on one point, which the sweep rejects when it reaches that point, so
+    // the test by points (no index arithmetic) decides the same rings.
+    if (p->a == q->a) return orientInGrid(p->a, p->b, q->b) == 0;
+    if (p->b == q->b) return orientInGrid(p->b, p->a, q->a) == 0;
     return segmentsMeet(p->a, p->b, q->a, q->b);
   }
 
