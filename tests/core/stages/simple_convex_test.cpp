@@ -364,5 +364,37 @@ TEST(StageSimpleConvex, RandomSetsAcrossTheConvexRingMatchTheGeneralPath) {
   EXPECT_LT(taken, total);      // and left some to the general path
 }
 
+// The side tests run a loop compiled for each count of 3 to 12 sides and a general one above
+// (withSideCount(), convex_sides.hpp): ROIs with 3 to 20 sides, each against one ring across it
+// (Weiler-Atherton) and sets of rings across and apart from it (grouping, the walk over the set).
+TEST(StageSimpleConvex, EverySideCountGivesTheGeneralPathsResult) {
+  std::mt19937 rng(20261204);
+  const double pi = std::acos(-1.0);
+  for (int m = 3; m <= 20; ++m) {
+    Path roi;
+    for (int k = 0; k < m; ++k) {
+      const double t = 2 * pi * (k + 0.3) / m;
+      roi.emplace_back(std::round(500 + 400 * std::cos(t)), std::round(500 + 300 * std::sin(t)));
+    }
+    const Grid grid = resolveGrid(Options{}.grid, Paths{roi});
+    ASSERT_EQ(detail::snapRings({roi}, 1, grid)[0].size(), std::size_t(m)) << m << " sides";
+    int taken = 0;
+    for (int trial = 0; trial < 12; ++trial) {
+      const std::string what = std::to_string(m) + " sides, trial " + std::to_string(trial);
+      const FillRule rule = kRules[trial % 4];
+      const Path ring = stages::starShapedRing(rng, 8 + int(rng() % 40), {500, 500}, 480, 0.4);
+      taken += checkCase(ring, roi, rule, what) ? 1 : 0;
+      Paths set;
+      for (int k = 0; k < 6; ++k) {
+        const Point centre(std::uniform_real_distribution<double>(0, 1000)(rng),
+                           std::uniform_real_distribution<double>(0, 1000)(rng));
+        set.push_back(stages::starShapedRing(rng, 6 + int(rng() % 12), centre, 60, 0.5));
+      }
+      checkSet(set, roi, rule, what + ", a set");
+    }
+    EXPECT_GT(taken, 0) << m << " sides: Weiler-Atherton took none";
+  }
+}
+
 }  // namespace
 }  // namespace roiclip
