@@ -30,6 +30,14 @@ class OutputFrame {
     }
     return {coordinate(p.x, p.w, 0), coordinate(p.y, p.w, 1)};
   }
+  /// Both coordinates of a grid point.
+  [[nodiscard]] Point point(IPoint p) const {
+    if (gridFast_) {
+      return {double(p.x + gridOrigin_[0]) * gridFactor_,
+              double(p.y + gridOrigin_[1]) * gridFactor_};
+    }
+    return {coordinate(p.x, 1, 0), coordinate(p.y, 1, 1)};
+  }
 
  private:
   /// coordinate() beyond its 64-bit fast paths: exact division in 128 or 256 bits.

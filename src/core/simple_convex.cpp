@@ -112,6 +112,19 @@ bool appendCrossings(const CcwRing& s, int ring, const CcwRing& c, unsigned all,
   return true;
 }
 
+// The exact point of a walked point.
+XPoint exactOf(const WeilerScratch& w, const WalkPoint& a) {
+  return a.crossing < 0 ? XPoint(a.p) : w.crossings[std::size_t(a.crossing)].x;
+}
+bool lessWalked(const WeilerScratch& w, const WalkPoint& a, const WalkPoint& b) {
+  if (a.crossing < 0 && b.crossing < 0) return a.p < b.p;
+  return lessInBox(exactOf(w, a), exactOf(w, b));
+}
+bool equalWalked(const WeilerScratch& w, const WalkPoint& a, const WalkPoint& b) {
+  if (a.crossing < 0 && b.crossing < 0) return a.p == b.p;
+  return a.crossing == b.crossing || equalInBox(exactOf(w, a), exactOf(w, b));
+}
+
 // Weiler-Atherton's walk over the crossings in w.crossings (each ring's in a row, from
 // w.crossStart[r]; the rings taken with the filled side on the left, `ringAt(r)` giving ring r):
 // along a ring from each entering crossing to the next crossing on it, which leaves C, then
@@ -159,13 +172,14 @@ bool walkCrossings(const CcwRing& c, RingAt ringAt, Piece piece, WeilerScratch& 
       if (leave.entering) return false;
       piece(t, in.ring);
       // Entering where it just left (a touch from inside): the point once.
-      if (w.points.size() == w.ringStart.back() || !equalInBox(w.points.back(), in.x)) {
-        w.points.push_back(in.x);
+      const WalkPoint inPoint{{}, int(at)};
+      if (w.points.size() == w.ringStart.back() || !equalWalked(w, w.points.back(), inPoint)) {
+        w.points.push_back(inPoint);
       }
       int steps = (leave.edge - in.edge + n) % n;
       if (steps == 0 && leaveAt <= at) steps = n;  // round the whole ring on one edge
-      for (int k = 1; k <= steps; ++k) w.points.emplace_back(s[(in.edge + k) % n]);
-      w.points.push_back(leave.x);
+      for (int k = 1; k <= steps; ++k) w.points.push_back({s[(in.edge + k) % n]});
+      w.points.push_back({{}, int(leaveAt)});
       // Along C from the leaving crossing to the next crossing on C, which enters.
       const std::size_t rank = std::size_t(rankOnC[leaveAt]);
       const std::size_t nextRank = (rank + 1) % kCount;
@@ -174,10 +188,10 @@ bool walkCrossings(const CcwRing& c, RingAt ringAt, Piece piece, WeilerScratch& 
       if (!enter.entering) return false;
       int corners = (enter.side - leave.side + m) % m;
       if (corners == 0 && nextRank <= rank) corners = m;
-      for (int k = 1; k <= corners; ++k) w.points.emplace_back(c[(leave.side + k) % m]);
+      for (int k = 1; k <= corners; ++k) w.points.push_back({c[(leave.side + k) % m]});
       at = enterAt;
     } while (at != start);
-    if (equalInBox(w.points.back(), w.points[w.ringStart.back()])) w.points.pop_back();
+    if (equalWalked(w, w.points.back(), w.points[w.ringStart.back()])) w.points.pop_back();
     w.ringStart.push_back(w.points.size());
   }
   return true;
@@ -187,7 +201,7 @@ bool walkCrossings(const CcwRing& c, RingAt ringAt, Piece piece, WeilerScratch& 
 std::size_t lowestOf(const WeilerScratch& w, std::size_t t) {
   std::size_t first = w.ringStart[t];
   for (std::size_t i = first + 1; i < w.ringStart[t + 1]; ++i) {
-    if (lessInBox(w.points[i], w.points[first])) first = i;
+    if (lessWalked(w, w.points[i], w.points[first])) first = i;
   }
   return first;
 }
@@ -197,8 +211,10 @@ Path walkedPath(const WeilerScratch& w, std::size_t t, std::size_t lowest,
                 const OutputFrame& frame) {
   const std::size_t begin = w.ringStart[t], n = w.ringStart[t + 1] - begin;
   const std::size_t first = lowest - begin;
-  return outputRing(
-      n, [&](std::size_t k) { return frame.point(w.points[begin + (first + n - 1 - k) % n]); });
+  return outputRing(n, [&](std::size_t k) {
+    const WalkPoint& a = w.points[begin + (first + n - 1 - k) % n];
+    return a.crossing < 0 ? frame.point(a.p) : frame.point(w.crossings[std::size_t(a.crossing)].x);
+  });
 }
 
 // Output as stages 1 to 4 emit it: each ring counter-clockwise from its lexicographically smallest
@@ -212,7 +228,7 @@ PolygonSet emit(WeilerScratch& w, const Grid& grid) {
     w.order.push_back(r);
   }
   std::sort(w.order.begin(), w.order.end(), [&](std::size_t a, std::size_t b) {
-    return lessInBox(w.points[w.lowest[a]], w.points[w.lowest[b]]);
+    return lessWalked(w, w.points[w.lowest[a]], w.points[w.lowest[b]]);
   });
   const OutputFrame frame(grid);
   PolygonSet result;
@@ -385,7 +401,7 @@ bool intersectSimpleRingsConvex(const Rings& rings, FillRule rule,
   w.lowest.clear();
   for (std::size_t t = 0; t < walkedCount; ++t) {
     w.lowest.push_back(lowestOf(w, t));
-    polygons.push_back({w.points[w.lowest.back()], int(t), -1});
+    polygons.push_back({exactOf(w, w.points[w.lowest.back()]), int(t), -1});
   }
   for (std::size_t r = 0; r < ringCount; ++r) {
     if (place[r] == kInside && rn[r].filledInside) {

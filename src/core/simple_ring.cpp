@@ -344,7 +344,7 @@ Path simpleRingPath(const std::vector<IPoint>& ring, LowestVertex lowest, bool h
   };
   return outputRing(n, [&](std::size_t k) {
     const std::size_t t = !hole ? n - 1 - k : k + 1 < n ? n - 2 - k : n - 1;
-    return frame.point(XPoint(traced(t)));
+    return frame.point(traced(t));
   });
 }
 
