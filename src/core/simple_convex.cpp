@@ -125,6 +125,27 @@ bool equalWalked(const WeilerScratch& w, const WalkPoint& a, const WalkPoint& b)
   return a.crossing == b.crossing || equalInBox(exactOf(w, a), exactOf(w, b));
 }
 
+// Appends `count` vertices of s, from vertex `from` on (counter-clockwise, round the ring).
+void appendRun(const CcwRing& s, int from, int count, std::vector<WalkPoint>& out) {
+  const std::size_t at = out.size();
+  out.resize(at + std::size_t(count));
+  WalkPoint* to = out.data() + at;
+  const IPoint* points = s.ring->data();
+  const int n = s.size();
+  int j = s.reversed ? n - 1 - from : from;  // the stored index
+  if (s.reversed) {
+    for (int i = 0; i < count; ++i) {
+      to[i].p = points[j];
+      j = j == 0 ? n - 1 : j - 1;
+    }
+  } else {
+    for (int i = 0; i < count; ++i) {
+      to[i].p = points[j];
+      j = j == n - 1 ? 0 : j + 1;
+    }
+  }
+}
+
 // Weiler-Atherton's walk over the crossings in w.crossings (each ring's in a row, from
 // w.crossStart[r]; the rings taken with the filled side on the left, `ringAt(r)` giving ring r):
 // along a ring from each entering crossing to the next crossing on it, which leaves C, then
@@ -178,7 +199,7 @@ bool walkCrossings(const CcwRing& c, RingAt ringAt, Piece piece, WeilerScratch& 
       }
       int steps = (leave.edge - in.edge + n) % n;
       if (steps == 0 && leaveAt <= at) steps = n;  // round the whole ring on one edge
-      for (int k = 1; k <= steps; ++k) w.points.push_back({s[(in.edge + k) % n]});
+      appendRun(s, (in.edge + 1) % n, steps, w.points);
       w.points.push_back({{}, int(leaveAt)});
       // Along C from the leaving crossing to the next crossing on C, which enters.
       const std::size_t rank = std::size_t(rankOnC[leaveAt]);
@@ -198,10 +219,19 @@ bool walkCrossings(const CcwRing& c, RingAt ringAt, Piece piece, WeilerScratch& 
 }
 
 // The index in w.points of the lexicographically smallest point of result ring t.
+// The grid vertices (most of a ring) by their coordinates first, then the crossings.
 std::size_t lowestOf(const WeilerScratch& w, std::size_t t) {
-  std::size_t first = w.ringStart[t];
-  for (std::size_t i = first + 1; i < w.ringStart[t + 1]; ++i) {
-    if (lessWalked(w, w.points[i], w.points[first])) first = i;
+  const std::size_t begin = w.ringStart[t], end = w.ringStart[t + 1];
+  std::size_t first = end;
+  for (std::size_t i = begin; i < end; ++i) {
+    const WalkPoint& a = w.points[i];
+    if (a.crossing < 0 && (first == end || a.p < w.points[first].p)) first = i;
+  }
+  for (std::size_t i = begin; i < end; ++i) {
+    if (w.points[i].crossing >= 0 &&
+        (first == end || lessWalked(w, w.points[i], w.points[first]))) {
+      first = i;
+    }
   }
   return first;
 }

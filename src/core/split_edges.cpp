@@ -62,6 +62,7 @@ class Sweep {
         const BooleanSpec& spec, Workspace& ws)
       : spec_(spec),
         pieces_(ws.pieces),
+        exactRights_(ws.exactRights),
         starts_(ws.starts),
         queue_(ws.queue),
         eventPoints_(ws.eventPoints),
@@ -75,6 +76,8 @@ class Sweep {
     // The status links pieces by address: the array must not move while the sweep runs.
     pieces_.clear();
     pieces_.reserve(total);
+    exactRights_.clear();
+    exactRights_.reserve(exactEdges.size());
     starts_.clear();
     queue_.clear();
     eventPoints_.clear();
@@ -82,12 +85,12 @@ class Sweep {
     nodes_.clear();
     freeNodes_.clear();
     starts_.reserve(total * 2);  // exact edges with grid ends start here too
-    // Each piece is built in place: a copy of its 240 bytes cost as much as building it.
+    // Each piece is built in place: a copy of its 176 bytes cost as much as building it.
     for (const InputEdge& e : edges) {
       const int id = int(pieces_.size());
       SweepPiece& a = pieces_.emplace_back();
       a.left = XPoint(e.a);
-      a.right = XPoint(e.b);
+      a.rightFx = double(e.b.x);
       a.lineA = e.a;
       a.lineB = e.b;
       a.contribution[e.operand] = e.open ? 0 : e.direction;
@@ -100,7 +103,9 @@ class Sweep {
       const int id = int(pieces_.size());
       SweepPiece& a = pieces_.emplace_back();
       a.left = e.left;
-      a.right = e.right;
+      a.exactRight = int(exactRights_.size());
+      a.rightFx = e.right.fx;
+      exactRights_.push_back(e.right);
       a.lineA = e.lineA;
       a.lineB = e.lineB;
       a.contribution[e.operand] = e.direction;
@@ -199,6 +204,22 @@ class Sweep {
     }
     status_.erase(status_.iterator_to(*x));
     return x->above;
+  }
+
+  // The right end of piece a, x against it, and whether it is p.
+  [[nodiscard]] XPoint rightOf(const SweepPiece& a) const {
+    return a.exactRight < 0 ? XPoint(a.lineB) : exactRights_[std::size_t(a.exactRight)];
+  }
+  [[nodiscard]] int compareToRight(const XPoint& x, const SweepPiece& a) const {
+    const int c = compareCachedInBox(x.fx, a.rightFx);
+    if (c != 0) return c;
+    return a.exactRight < 0 ? compareInBox(x, XPoint(a.lineB))
+                            : compareInBox(x, exactRights_[std::size_t(a.exactRight)]);
+  }
+  [[nodiscard]] bool endsAt(const SweepPiece& a, const XPoint& p) const {
+    if (compareCachedInBox(p.fx, a.rightFx) != 0) return false;
+    return a.exactRight < 0 ? atGridPoint(p, a.lineB)
+                            : equalInBox(exactRights_[std::size_t(a.exactRight)], p);
   }
 
   // x must not lie in eventPoints_ (it may move).
@@ -306,7 +327,7 @@ class Sweep {
       const SweepStart& ev = starts_[cursor_];
       if (!ev.end) {
         starting_.push_back(ev.piece);
-      } else if (pieces_[ev.piece].node != nullptr && equalInBox(pieces_[ev.piece].right, p)) {
+      } else if (pieces_[ev.piece].node != nullptr && endsAt(pieces_[ev.piece], p)) {
         locator = ev.piece;
       }
       ++cursor_;
@@ -361,7 +382,7 @@ class Sweep {
       a.node = nullptr;
       if (a.slot >= 0) out_.pieces[a.slot].right = vertexHere(p);
       if (a.open) out_.openPieces.push_back({i, a.left, p, a.place});
-      if (!equalInBox(a.right, p)) {
+      if (!endsAt(a, p)) {
         a.left = p;
         starting_.push_back(i);
       }
@@ -445,7 +466,7 @@ class Sweep {
       const int s = crossSign(pieces_[a].direction(), pieces_[b].direction());
       if (s != 0) return s > 0;
       if (pieces_[a].open != pieces_[b].open) return pieces_[b].open;
-      const int c = compareInBox(pieces_[a].right, pieces_[b].right);
+      const int c = compareInBox(rightOf(pieces_[a]), rightOf(pieces_[b]));
       return c != 0 ? c < 0 : a < b;
     };
     const auto cancels = [this](int i) {
@@ -475,8 +496,9 @@ class Sweep {
              crossSign(pieces_[first].direction(), pieces_[starting_[j]].direction()) == 0) {
         SweepPiece& other = pieces_[starting_[j]];
         for (int k = 0; k < kOperands; ++k) pieces_[first].contribution[k] += other.contribution[k];
-        if (!equalInBox(other.right, pieces_[first].right)) {
-          other.left = pieces_[first].right;
+        const XPoint firstRight = rightOf(pieces_[first]);
+        if (!endsAt(other, firstRight)) {
+          other.left = firstRight;
           push(other.left, starting_[j]);
         }
         ++j;
@@ -519,8 +541,8 @@ class Sweep {
     if (!segmentCrossing(pa.lineA, pa.lineB, pb.lineA, pb.lineB, x)) return;
     // x is a new crossing, mostly off the grid: its cached x decides first.
     if (compareInBoxCachedFirst(x, p) <= 0) return;
-    const int ca = compareInBoxCachedFirst(x, pa.right);
-    const int cb = compareInBoxCachedFirst(x, pb.right);
+    const int ca = compareToRight(x, pa);
+    const int cb = compareToRight(x, pb);
     if (ca > 0 || cb > 0) return;
     if (ca == 0 || cb == 0) return;  // already an event: the end of one of them
     queueCrossing(x, a, b);
@@ -539,6 +561,7 @@ class Sweep {
   std::uint64_t crossings_ = 0;  // crossings found so far (Limits::maxCrossings)
   int vertex_ = -1;
   std::vector<SweepPiece>& pieces_;
+  std::vector<XPoint>& exactRights_;
   std::vector<SweepStart>& starts_;
   const StartFrame frame_;  // the grid range's corner
   std::size_t cursor_ = 0;

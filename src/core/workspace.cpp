@@ -16,6 +16,7 @@ Workspace& threadWorkspace() {
 
 void Workspace::recycleAll() {
   recycle(pieces);
+  recycle(exactRights);
   recycle(starts);
   recycle(queue);
   recycle(eventPoints);
@@ -52,6 +53,7 @@ void Workspace::forEachLent(F f) {
 
 void Workspace::release() {
   std::vector<SweepPiece>().swap(pieces);
+  std::vector<XPoint>().swap(exactRights);
   std::vector<SweepStart>().swap(starts);
   std::vector<SweepEvent>().swap(queue);
   std::vector<ExactCoords>().swap(eventPoints);

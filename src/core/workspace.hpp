@@ -174,13 +174,18 @@ struct WeilerScratch {
 
 /// A piece of an input edge while the sweep has it (split_edges.cpp).
 struct SweepPiece {
-  XPoint left, right;
+  XPoint left;
   IPoint lineA, lineB;
+  /// Its right end's cached x, which decides most comparisons with it (exactRight below).
+  double rightFx = 0;
   Windings contribution{};
   Windings windBelow{};
   StatusNode* node = nullptr;  ///< its status node while in the status, else null
   int slot = -1;         ///< index of its output piece (result pieces only) while in the status
   int resultBelow = -1;  ///< nearest result piece below it when it was inserted
+  /// Its right end: -1 for lineB (an input edge's end), else the index of an exact edge's end
+  /// in Workspace::exactRights. A piece keeps its right end when it is cut.
+  int exactRight = -1;
   /// The last pieces above it tested for a crossing (a ring; checkedNext is the oldest). A pair
   /// separated by a third piece for a moment becomes adjacent again: with only the last one
   /// remembered, W3 tested 22% of its pairs twice and queued 135k of its 465k crossings twice.
@@ -296,6 +301,7 @@ struct Workspace {
   Arrangement arrangement;
   // Sweep (split_edges.cpp).
   std::vector<SweepPiece> pieces;
+  std::vector<XPoint> exactRights;  ///< the right ends of the pieces of exact edges
   std::vector<SweepStart> starts;
   std::vector<SweepEvent> queue;         ///< a binary heap, earliest point first
   std::vector<ExactCoords> eventPoints;  ///< exact points of queued events (slots are reused)
