@@ -218,8 +218,8 @@ bool walkCrossings(const CcwRing& c, RingAt ringAt, Piece piece, WeilerScratch& 
   return true;
 }
 
-// The index in w.points of the lexicographically smallest point of result ring t.
-// The grid vertices (most of a ring) by their coordinates first, then the crossings.
+// The index in w.points of the lexicographically smallest point of result ring t: among the grid
+// vertices (most of a ring) by their coordinates first, then against the crossings.
 std::size_t lowestOf(const WeilerScratch& w, std::size_t t) {
   const std::size_t begin = w.ringStart[t], end = w.ringStart[t + 1];
   std::size_t first = end;

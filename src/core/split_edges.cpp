@@ -85,7 +85,7 @@ class Sweep {
     nodes_.clear();
     freeNodes_.clear();
     starts_.reserve(total * 2);  // exact edges with grid ends start here too
-    // Each piece is built in place: a copy of its 176 bytes cost as much as building it.
+    // Each piece is built in place: a copy of its 192 bytes cost as much as building it.
     for (const InputEdge& e : edges) {
       const int id = int(pieces_.size());
       SweepPiece& a = pieces_.emplace_back();

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Conversions between OpenCV contours and roiclip paths / polygon sets.
 #include <algorithm>
+#include <climits>
 #include <cmath>
 #include <functional>
 #include <iostream>
@@ -39,6 +40,24 @@ TEST(FromContours, AcceptsEveryPointType) {
                                      (cv::Mat_<double>(3, 2) << 0, 1, 2, 3, 4, 5.5)};
   EXPECT_EQ(fromContours(mats), (Paths{{{1, 2}, {3, 4}, {5, 0}}, {{0, 1}, {2, 3}, {4, 5.5}}}));
   EXPECT_EQ(fromContour(ints[0]), (Path{{1, 2}, {3, 4}, {5, 0}}));
+  // Vectors of two-int points are read in place (no cv::Mat per contour): the same paths as
+  // through cv::Mat, for cv::Vec2i too, with empty contours kept and extreme ints exact.
+  const std::vector<std::vector<cv::Point>> several = {
+      {{-7, 9}, {INT_MAX, INT_MIN}, {0, 0}}, {}, {{4, 4}}, {{1, 1}, {2, 5}, {6, 2}, {3, -1}}};
+  std::vector<cv::Mat> severalMats;
+  for (const auto& c : several) severalMats.push_back(cv::Mat(c, true));
+  const Paths expected = {{{-7, 9}, {double(INT_MAX), double(INT_MIN)}, {0, 0}},
+                          {},
+                          {{4, 4}},
+                          {{1, 1}, {2, 5}, {6, 2}, {3, -1}}};
+  EXPECT_EQ(fromContours(several), expected);
+  EXPECT_EQ(fromContours(severalMats), expected);
+  std::vector<std::vector<cv::Vec2i>> vecs;
+  for (const auto& c : several) {
+    auto& v = vecs.emplace_back();
+    for (const cv::Point& q : c) v.emplace_back(q.x, q.y);
+  }
+  EXPECT_EQ(fromContours(vecs), expected);
   EXPECT_TRUE(fromContours(std::vector<std::vector<cv::Point>>{}).empty());
   EXPECT_EQ(fromContours(std::vector<std::vector<cv::Point>>{{}}), Paths{Path{}});
 }
