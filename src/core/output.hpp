@@ -25,8 +25,7 @@ class OutputFrame {
   /// Both coordinates of an exact point.
   [[nodiscard]] Point point(const XPoint& p) const {
     if (gridFast_ && p.w == 1) {  // a grid point (within the grid's range, as every vertex)
-      return {double(std::int64_t(p.x) + gridOrigin_[0]) * gridFactor_,
-              double(std::int64_t(p.y) + gridOrigin_[1]) * gridFactor_};
+      return point(IPoint{std::int64_t(p.x), std::int64_t(p.y)});
     }
     return {coordinate(p.x, p.w, 0), coordinate(p.y, p.w, 1)};
   }

@@ -239,11 +239,6 @@ inline int compareInBoxCachedFirst(const XPoint& a, const XPoint& b) {
   const int c = compareCachedInBox(a.fx, b.fx);
   return c != 0 ? c : compareInBox(a, b);
 }
-/// compareInBoxCachedFirst() against a grid point (its cached x is double(b.x), exact).
-inline int compareInBoxCachedFirst(const XPoint& a, IPoint b) {
-  const int c = compareCachedInBox(a.fx, double(b.x));
-  return c != 0 ? c : compareInBox(a, XPoint(b));
-}
 inline bool equalInBox(const XPoint& a, const XPoint& b) { return compareInBox(a, b) == 0; }
 inline bool lessInBox(const XPoint& a, const XPoint& b) { return compareInBox(a, b) < 0; }
 

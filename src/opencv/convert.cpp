@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <limits>
 #include <string>
+#include <type_traits>
 #include <utility>
 
 #include <opencv2/imgproc.hpp>
@@ -37,16 +38,18 @@ const char* depthName(int depth) {
   }
 }
 
+// The n points x0 y0 x1 y1 ... at v (integer coordinates are always finite).
 template <typename T>
-void appendPoints(const cv::Mat& m, int n, std::size_t index, Path& out) {
-  const T* v = m.ptr<T>();
-  out.reserve(std::size_t(n));
-  for (int i = 0; i < n; ++i) {
-    const double x = double(v[2 * std::ptrdiff_t(i)]);
-    const double y = double(v[2 * std::ptrdiff_t(i) + 1]);
-    if (!std::isfinite(x) || !std::isfinite(y)) {
-      throw InvalidInputError(contourName(index) + ", point " + std::to_string(i) + ": " +
-                              (std::isfinite(x) ? "y" : "x") + " is not a finite number");
+void appendPoints(const T* v, std::size_t n, std::size_t index, Path& out) {
+  out.reserve(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double x = double(v[2 * i]);
+    const double y = double(v[2 * i + 1]);
+    if constexpr (std::is_floating_point_v<T>) {
+      if (!std::isfinite(x) || !std::isfinite(y)) {
+        throw InvalidInputError(contourName(index) + ", point " + std::to_string(i) + ": " +
+                                (std::isfinite(x) ? "y" : "x") + " is not a finite number");
+      }
     }
     out.emplace_back(x, y);
   }
@@ -67,13 +70,13 @@ Path convertContour(const cv::Mat& input, std::size_t index) {
   const cv::Mat m = input.isContinuous() ? input : input.clone();
   switch (m.depth()) {
     case CV_32S:
-      appendPoints<int>(m, n, index, path);
+      appendPoints(m.ptr<int>(), std::size_t(n), index, path);
       break;
     case CV_32F:
-      appendPoints<float>(m, n, index, path);
+      appendPoints(m.ptr<float>(), std::size_t(n), index, path);
       break;
     case CV_64F:
-      appendPoints<double>(m, n, index, path);
+      appendPoints(m.ptr<double>(), std::size_t(n), index, path);
       break;
     default:
       throw InvalidInputError(contourName(index) + ": point type " + depthName(m.depth()) +
@@ -93,11 +96,9 @@ bool appendIntPointVectors(const cv::_InputArray& contours, Paths& out) {
   const auto& vectors = *static_cast<const std::vector<std::vector<uchar>>*>(contours.getObj());
   out.reserve(vectors.size());
   for (const std::vector<uchar>& bytes : vectors) {
-    const std::size_t n = bytes.size() / (2 * sizeof(int));
-    const int* v = reinterpret_cast<const int*>(bytes.data());
-    Path& path = out.emplace_back();
-    path.reserve(n);
-    for (std::size_t i = 0; i < n; ++i) path.emplace_back(double(v[2 * i]), double(v[2 * i + 1]));
+    const std::size_t index = out.size();
+    appendPoints(reinterpret_cast<const int*>(bytes.data()), bytes.size() / (2 * sizeof(int)),
+                 index, out.emplace_back());
   }
   return true;
 }
