@@ -7,11 +7,14 @@
 // lexicographic turning vertices into chains whose vertices increase lexicographically (x, then
 // y). A chain enters the status once, at its first vertex, and leaves once, at its last; along it
 // the sweep only moves to the next edge, which is tested against the chains next to it (no tree
-// step). The next vertex to visit comes from a binary heap over the active chains, a few hundred
-// on a pixel contour, not over the edges. Every time two current edges become neighbours in the
-// status they are tested, so the lexicographically first contact of two edges is found by the
-// time the sweep reaches it (Shamos and Hoey): the test stops there. O(n log c) for n vertices in
-// c chains, no arithmetic beyond exact int64 orientation (every point is a grid point).
+// step). The sweep visits the vertices in one order sorted up front (a radix sort of their keys,
+// each tagged with what happens there): a chain's vertices increase along it, so each is reached
+// after the ones before it on its chain, and only the ring's input events are ever visited (no
+// crossing is, since the test stops at the first contact). Every time two current edges become
+// neighbours in the status they are tested, so the lexicographically first contact of two edges
+// is found by the time the sweep reaches it (Shamos and Hoey). O(n log c) for n vertices in c
+// chains (the sort is linear in practice), no arithmetic beyond exact int64 orientation (every
+// point is a grid point).
 //
 // Simple here means: the ring's vertices are distinct, consecutive edges meet only at their
 // shared vertex and are not collinear (snapRings() leaves no straight-on vertex, and a spike is
@@ -68,41 +71,16 @@ class ChainSweep {
 
   bool run() {
     if (!splitChains()) return false;
-    std::size_t next = 0;
-    const std::size_t c = s_.starts.size();
-    while (next < c || !s_.heap.empty()) {
-      // The earliest point: the next chain start or the heap's top (equal keys, equal points).
-      std::uint64_t key;
-      if (s_.heap.empty() || (next < c && s_.starts[next].key <= s_.heap.front().key)) {
-        key = s_.starts[next].key;
-      } else {
-        key = s_.heap.front().key;
-      }
-      // Mostly one chain going on through an inner vertex: its heap entry, at the root, takes
-      // the chain's next vertex in place (no other entry equals the root unless a child does).
-      const std::vector<ChainKey>& h = s_.heap;
-      if (!h.empty() && h.front().key == key && (next == c || s_.starts[next].key != key) &&
-          (h.size() < 2 || h[1].key != key) && (h.size() < 3 || h[2].key != key)) {
-        if (!advance(h.front().chain)) return false;
-        continue;
-      }
-      int starting[2] = {-1, -1}, ending[2] = {-1, -1};
-      int startCount = 0, endCount = 0;
-      while (next < c && s_.starts[next].key == key) {
-        if (startCount == 2) return false;
-        starting[startCount++] = s_.starts[next++].chain;
-      }
-      while (!s_.heap.empty() && s_.heap.front().key == key) {
-        if (endCount == 2) return false;
-        ending[endCount++] = s_.heap.front().chain;
-        popHeap();
-      }
-      if (startCount == 2 && endCount == 0) {
-        if (!insertPair(starting[0], starting[1])) return false;
-      } else if (startCount == 0 && endCount == 2) {
-        if (!removePair(ending[0], ending[1])) return false;
-      } else {
-        return false;  // two ring vertices at one point
+    const std::vector<ChainEvent>& events = s_.events;
+    for (std::size_t e = 0; e < events.size(); ++e) {
+      const ChainEvent& x = events[e];
+      if (e > 0 && events[e - 1].key == x.key) return false;  // two ring vertices at one point
+      if (x.pair < 0) {
+        if (!advance(x.chain)) return false;
+      } else if (s_.chains[std::size_t(x.chain)].ib < 0) {
+        if (!insertPair(x.chain, x.pair)) return false;
+      } else if (!removePair(x.chain, x.pair)) {
+        return false;
       }
     }
     return true;
@@ -125,16 +103,19 @@ class ChainSweep {
   }
 
   // The ring's maximal runs of lexicographically increasing or decreasing edges, each as a
-  // chain from its smallest vertex, and the order in which the chains start.
+  // chain from its smallest vertex, and every vertex's event in lexicographic order: the chains
+  // of a ring are made in ring order, so chain k and the next one meet at chain k's last vertex
+  // in ring order, a turning vertex where both start (chain k runs down the ring) or both end.
   bool splitChains() {
     std::vector<ChainNode>& chains = s_.chains;
+    std::vector<ChainEvent>& events = s_.events;
     chains.clear();
-    s_.starts.clear();
-    s_.heap.clear();
+    events.clear();
     for (int r = 0; r < int(count_); ++r) {
+      const IPoint* const points = rings_[std::size_t(r)].data();
       const int n = int(rings_[std::size_t(r)].size());
       if (n < 3) return false;
-      const auto up = [&](int i) { return vertex(r, i) < vertex(r, after(n, i, 1)); };
+      const auto up = [&](int i) { return points[i] < points[after(n, i, 1)]; };
       // A turning vertex to begin at: the first vertex where the direction changes.
       int begin = -1;
       for (int i = 0, prev = up(n - 1); i < n; ++i) {
@@ -146,21 +127,24 @@ class ChainSweep {
         prev = u;
       }
       if (begin < 0) return false;  // no ring of distinct points increases all the way round
+      const int first = int(chains.size());
       for (int i = begin, done = 0; done < n;) {
         const bool u = up(i);
-        int j = i, edges = 0;
-        while (done < n && up(j) == u) {
+        const int k = int(chains.size());
+        int j = after(n, i, 1), edges = 1;
+        for (++done; done < n && up(j) == u; ++done, ++edges) {
+          events.push_back({frame_.key(points[j]), k, -1});  // an inner vertex of chain k
           j = after(n, j, 1);
-          ++edges;
-          ++done;
         }
         ChainNode& chain = chains.emplace_back();
         chain.ring = r;
-        chain.points = rings_[std::size_t(r)].data();
+        chain.points = points;
         chain.size = n;
         chain.step = u ? +1 : -1;
         chain.ia = u ? i : j;
         chain.remaining = edges;
+        // The turning vertex j, shared with the next chain (the ring's first one after its last).
+        events.push_back({frame_.key(points[j]), k, done < n ? k + 1 : first});
         i = j;
       }
     }
@@ -168,26 +152,20 @@ class ChainSweep {
       below_->assign(count_, kNotReached);
       s_.reached.clear();
     }
-    s_.starts.reserve(chains.size());
-    for (std::size_t k = 0; k < chains.size(); ++k) {
-      s_.starts.push_back({frame_.key(vertex(chains[k].ring, chains[k].ia)), int(k)});
-    }
-    // Spreadsort on the keys: on a ragged pixel edge there is a chain every two vertices.
+    // Spreadsort on the keys, one per vertex: the sweep visits them in this order.
     boost::sort::spreadsort::integer_sort(
-        s_.starts.begin(), s_.starts.end(),
-        [](const ChainKey& k, unsigned shift) { return k.key >> shift; },
-        [](const ChainKey& a, const ChainKey& b) { return a.key < b.key; });
-    s_.heap.reserve(chains.size());
+        events.begin(), events.end(),
+        [](const ChainEvent& e, unsigned shift) { return e.key >> shift; },
+        [](const ChainEvent& a, const ChainEvent& b) { return a.key < b.key; });
     return true;
   }
 
-  // Makes the chain's next edge current (the chain must have one); returns its heap entry.
-  ChainKey stepChain(ChainNode& chain) {
+  // Makes the chain's next edge current (the chain must have one).
+  static void stepChain(ChainNode& chain) {
     chain.ib = after(chain.size, chain.ia, chain.step);
     chain.a = chain.points[chain.ia];
     chain.b = chain.points[chain.ib];
     --chain.remaining;
-    return {frame_.key(chain.b), int(&chain - s_.chains.data())};
   }
 
   // Whether the current edges of two chains meet where a simple ring allows no contact.
@@ -207,10 +185,9 @@ class ChainSweep {
   bool insertPair(int i, int j) {
     ChainNode* lo = &s_.chains[std::size_t(i)];
     ChainNode* hi = &s_.chains[std::size_t(j)];
-    if (lo->ring != hi->ring || lo->ia != hi->ia) return false;  // two vertices at one point
     const IPoint p = vertex(lo->ring, lo->ia);
-    pushHeap(stepChain(*lo));
-    pushHeap(stepChain(*hi));
+    stepChain(*lo);
+    stepChain(*hi);
     const int turn = orientInGrid(p, lo->b, hi->b);
     if (turn == 0) return false;  // overlapping first edges
     if (turn < 0) std::swap(lo, hi);
@@ -235,13 +212,11 @@ class ChainSweep {
   }
 
   // The chain's current edge ends at an inner vertex of the chain: its next edge becomes current.
-  // Its heap entry is the root.
   bool advance(int i) {
     ChainNode& chain = s_.chains[std::size_t(i)];
-    if (chain.remaining == 0) return false;  // a chain end without its partner
     const IPoint before = chain.a;
     chain.ia = chain.ib;
-    siftDown(stepChain(chain));  // the root's entry takes the chain's next vertex
+    stepChain(chain);
     if (orientInGrid(before, chain.a, chain.b) == 0) return false;  // a straight-on vertex
     return !conflict(chain.below, &chain) && !conflict(&chain, chain.above);
   }
@@ -250,9 +225,6 @@ class ChainSweep {
   bool removePair(int i, int j) {
     ChainNode* lo = &s_.chains[std::size_t(i)];
     ChainNode* hi = &s_.chains[std::size_t(j)];
-    if (lo->remaining != 0 || hi->remaining != 0 || lo->ring != hi->ring || lo->ib != hi->ib) {
-      return false;
-    }
     if (lo->above != hi) std::swap(lo, hi);
     if (lo->above != hi) return false;  // something passes between them into their end
     ChainNode* below = lo->below;
@@ -262,36 +234,6 @@ class ChainSweep {
     status_.erase(status_.iterator_to(*lo));
     status_.erase(status_.iterator_to(*hi));
     return !conflict(below, above);
-  }
-
-  void pushHeap(ChainKey e) {
-    std::vector<ChainKey>& h = s_.heap;
-    std::size_t hole = h.size();
-    h.emplace_back();
-    while (hole > 0 && h[(hole - 1) / 2].key > e.key) {
-      h[hole] = h[(hole - 1) / 2];
-      hole = (hole - 1) / 2;
-    }
-    h[hole] = e;
-  }
-  void popHeap() {
-    std::vector<ChainKey>& h = s_.heap;
-    const ChainKey last = h.back();
-    h.pop_back();
-    if (!h.empty()) siftDown(last);
-  }
-  // Puts `last` in the root's place and lets it sink.
-  void siftDown(ChainKey last) {
-    std::vector<ChainKey>& h = s_.heap;
-    const std::size_t n = h.size();
-    std::size_t hole = 0;
-    for (std::size_t child = 1; child < n; child = 2 * hole + 1) {
-      if (child + 1 < n && h[child + 1].key < h[child].key) ++child;
-      if (last.key <= h[child].key) break;
-      h[hole] = h[child];
-      hole = child;
-    }
-    h[hole] = last;
   }
 
   static constexpr int kNotReached = -2;

@@ -62,13 +62,14 @@ struct StatusNode {
 };
 
 /// A monotone chain of a ring in the simple-ring test (simple_ring.cpp): its current edge a-b
-/// (ring indices ia, ib; a < b lexicographically) and its status links.
+/// (ring indices ia, ib; a < b lexicographically; ib is -1 until the chain starts) and its
+/// status links.
 struct ChainNode {
   StatusHook hook;
   ChainNode* below = nullptr;
   ChainNode* above = nullptr;
   IPoint a, b;
-  int ia = 0, ib = 0;
+  int ia = 0, ib = -1;
   const IPoint* points = nullptr;  ///< its ring's vertices (the sweep's hot path reads them here)
   int size = 0;                    ///< and their number
   int ring = 0;                    ///< which ring of the set
@@ -82,10 +83,13 @@ struct ChainNode {
     }
   };
 };
-/// A point as a StartFrame key and the chain that reaches it.
-struct ChainKey {
+/// A ring vertex as the simple-ring test visits it: its StartFrame key and what happens there.
+/// An inner vertex of a chain (`pair` -1) moves `chain` on to its next edge; a turning vertex
+/// starts or ends the two chains `chain` and `pair` that meet there.
+struct ChainEvent {
   std::uint64_t key;
   int chain;
+  int pair;
 };
 /// What simpleRingsRegion() works out per ring: its smallest vertex and orientation, the
 /// innermost ring around it, the winding number just inside, whether it bounds the result and
@@ -102,20 +106,19 @@ struct RingNesting {
   int hole = -1;         ///< its index among its outer ring's holes (holes)
 };
 
-/// The working arrays of ringIsSimple() / ringsAreSimple(): the chains, their starts in order,
-/// the heap of the active chains' next vertices; for a set of rings, the chain below each ring's
+/// The working arrays of ringIsSimple() / ringsAreSimple(): the chains and every vertex's event
+/// in lexicographic order; for a set of rings, the chain below each ring's
 /// smallest vertex (-1: none) and the rings in the order the sweep reached them, then
 /// simpleRingsRegion()'s per-ring results.
 struct ChainScratch {
   std::vector<ChainNode> chains;
-  std::vector<ChainKey> starts, heap;
+  std::vector<ChainEvent> events;
   std::vector<int> below, reached;
   std::vector<RingNesting> nesting;
   template <class F>
   void forEach(F f) {
     f(chains);
-    f(starts);
-    f(heap);
+    f(events);
     f(below);
     f(reached);
     f(nesting);

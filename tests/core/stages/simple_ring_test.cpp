@@ -292,6 +292,45 @@ TEST(StageSimpleRing, AgreesWithBruteForceOnSmallDegenerateRings) {
   EXPECT_LT(simple, total - 1000);
 }
 
+// Sets of two or three small random rings on a 6 x 6 grid: ringsAreSimple() against the
+// definition (each ring simple, no two rings meet). Rings sharing a vertex, one ring's vertex on
+// another's edge and overlapping edges are common; the sweep visits every vertex once in one
+// sorted order, and two vertices at one point (of one ring or of two) end it.
+TEST(StageSimpleRing, SetsAgreeWithBruteForceOnSmallDegenerateRings) {
+  std::mt19937 rng(20261203);
+  detail::ChainScratch scratch;
+  int simple = 0, total = 0;
+  for (int trial = 0; trial < 20000; ++trial) {
+    std::vector<Ring> set(2 + rng() % 2);
+    for (Ring& r : set) {
+      const int n = 3 + int(rng() % 4);
+      for (int i = 0; i < n; ++i) {
+        const IPoint p{std::int64_t(rng() % 6), std::int64_t(rng() % 6)};
+        if (r.empty() || p != r.back()) r.push_back(p);
+      }
+      while (r.size() > 1 && r.back() == r.front()) r.pop_back();
+    }
+    bool expected = true;
+    for (std::size_t a = 0; a < set.size() && expected; ++a) {
+      expected = bruteForceSimple(set[a]);
+      for (std::size_t b = 0; b < a && expected; ++b) {
+        for (std::size_t i = 0; i < set[a].size() && expected; ++i) {
+          for (std::size_t j = 0; j < set[b].size() && expected; ++j) {
+            expected = !closedSegmentsMeet(set[a][i], set[a][(i + 1) % set[a].size()], set[b][j],
+                                           set[b][(j + 1) % set[b].size()]);
+          }
+        }
+      }
+    }
+    if (std::any_of(set.begin(), set.end(), [](const Ring& r) { return r.size() < 3; })) continue;
+    ASSERT_EQ(detail::ringsAreSimple(set, scratch), expected) << "trial " << trial;
+    simple += expected ? 1 : 0;
+    ++total;
+  }
+  EXPECT_GT(simple, 100);  // both verdicts are exercised
+  EXPECT_LT(simple, total - 1000);
+}
+
 // Star-shaped rings (sorted random angles, random radii, rounded): mostly simple, sometimes a
 // rounding makes edges touch. Verdict against brute force, region against the general path.
 TEST(StageSimpleRing, StarShapedRingsMatchTheGeneralPath) {
