@@ -75,21 +75,27 @@ void mergeStraightRuns(std::vector<IPoint>& ring) {
 
 // Grid::toUnits() inline for both coordinates of a point at once (the same operations: round
 // v * scale to an integer, subtract origin * scale, test the range). False for a point it cannot
-// take (a coordinate out of range, not finite, or too large for the short rounding): snap()
-// decides those, giving the same units or throwing naming the path, vertex and axis.
+// take (a coordinate out of range or not finite): snap() decides those, giving the same units or
+// throwing naming the path, vertex and axis.
+//
+// The short rounding (u + 1.5 * 2^52) - 1.5 * 2^52 is exact only for |u| < 2^51, and the range
+// test alone keeps to that when |origin * scale| <= 2^50: for 2^51 <= |u| < 2^52 the short
+// rounding is within 1 of u, beyond that within a relative 2^-51, so its result is at least
+// 2^51 - 1 in magnitude and lies more than 2^30 units from the origin (rejected); a result it
+// accepts is within 2^50 + 2^30 of 0, so |u| < 2^51 and the rounding was exact. A larger origin
+// leaves every point to snap() (the scale NaN fails every range test).
 struct FastSnap {
   double s, ox, oy;
   explicit FastSnap(const Grid& grid)
-      : s(grid.scale), ox(grid.origin.x * grid.scale), oy(grid.origin.y * grid.scale) {}
+      : s(grid.scale), ox(grid.origin.x * grid.scale), oy(grid.origin.y * grid.scale) {
+    if (!(std::fabs(ox) <= 0x1p50 && std::fabs(oy) <= 0x1p50)) s = NAN;
+  }
   bool operator()(const Point& v, IPoint& q) const {
     constexpr double kRound = 6755399441055744.0;  // 1.5 * 2^52, as detail::roundToUnits
     constexpr double kMax = double(Grid::kMaxUnits);
     const double ux = v.x * s, uy = v.y * s;
     const double dx = ((ux + kRound) - kRound) - ox, dy = ((uy + kRound) - kRound) - oy;
-    if (!(std::fabs(ux) < 0x1p51 && std::fabs(uy) < 0x1p51 && std::fabs(dx) <= kMax &&
-          std::fabs(dy) <= kMax)) {
-      return false;
-    }
+    if (!(std::fabs(dx) <= kMax && std::fabs(dy) <= kMax)) return false;
     q = {std::int64_t(dx), std::int64_t(dy)};
     return true;
   }

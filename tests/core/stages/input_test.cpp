@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -218,6 +219,53 @@ TEST(StageInput, MergesStraightRunsAtTheRangesEnds) {
       detail::snapRings({{{-m, -m}, {m, -m}, {m, m}, {m, -m + 1}, {m, m - 1}}}, 0, Grid::fixed(1));
   ASSERT_EQ(spike.size(), 1u);
   EXPECT_EQ(spike[0].size(), 5u);
+}
+
+// The inline snapping of snapRings() against the rule it repeats, Grid::toUnits(), where it
+// decides by its range test alone: origins up to and past 2^50 units, coordinates whose units
+// reach 2^51 and 2^52 (where the short rounding is no longer exact), and the range's ends. A
+// point is snapped to toUnits()' units, or the call throws when toUnits() rejects it.
+TEST(StageInput, InlineSnappingAgreesWithToUnitsAtItsLimits) {
+  const double m = double(Grid::kMaxUnits);
+  int snapped = 0, rejected = 0;
+  for (const double scale : {1.0, 0.5, 4.0, 0x1p-20, 1000.0}) {
+    for (const double originUnits :
+         {0.0, 0x1p50, -0x1p50, 0x1p50 + 1, -0x1p50 - 1, 0x1p51, 0x1p51 - 0x1p30, 0x1p60}) {
+      const Point origin{originUnits / scale, -originUnits / scale};
+      const Grid grid = Grid::fixed(scale, origin);
+      std::vector<double> units;
+      for (const double base : {originUnits, 0x1p51, -0x1p51, 0x1p52, -0x1p52, 0.0}) {
+        for (const double d : {-m - 1, -m, -m + 0.5, -1.5, -0.5, 0.0, 0.5, 2.5, m - 0.5, m, m + 0.5,
+                               m + 1, 0x1p51 - originUnits}) {
+          units.push_back(base + d);
+        }
+      }
+      for (const double u : units) {
+        for (const double v : {u / scale, std::nextafter(u / scale, 0.0)}) {
+          const std::optional<std::int64_t> x = grid.toUnits(v, origin.x);
+          const std::optional<std::int64_t> y = grid.toUnits(-v, origin.y);
+          // The probe and the origin's grid point: a ring of two points (the probe first).
+          const Paths paths{{{v, -v}, origin, origin}};
+          if (!x || !y) {
+            EXPECT_THROW((void)detail::snapRings(paths, 0, grid), InvalidInputError)
+                << "scale " << scale << " origin " << originUnits << " v " << v;
+            ++rejected;
+            continue;
+          }
+          const auto rings = detail::snapRings(paths, 0, grid);
+          const IPoint expected{*x, *y};
+          if (expected == IPoint{0, 0}) continue;  // the ring collapses to one point
+          ASSERT_EQ(rings.size(), 1u) << "scale " << scale << " origin " << originUnits;
+          ASSERT_EQ(rings[0].size(), 2u);
+          EXPECT_EQ(rings[0][0], expected)
+              << "scale " << scale << " origin " << originUnits << " v " << v;
+          ++snapped;
+        }
+      }
+    }
+  }
+  EXPECT_GT(snapped, 200);
+  EXPECT_GT(rejected, 200);
 }
 
 }  // namespace
