@@ -148,9 +148,10 @@ PolygonSet resolveGeneral(Rings& subject, const Rings* clip, const BooleanSpec& 
 }  // namespace
 
 SnappedOperand snapOperand(const Paths& paths, int operand, FillRule rule, const Grid& grid,
-                           bool findConvex) {
+                           bool findConvex, Rings storage) {
   SnappedOperand out;
-  out.rings = snapRings(paths, operand, grid);
+  out.rings = std::move(storage);
+  snapRingsInto(paths, operand, grid, out.rings);
   out.rule = rule;
   out.convex = findConvex && out.rings.size() == 1 ? convexOrientation(out.rings[0]) : 0;
   return out;
@@ -204,19 +205,25 @@ PolygonSet simplify(const Paths& paths, FillRule rule, const Options& options) {
 PolygonSet clip(ClipOp op, const Paths& subject, const Paths& clipPaths, FillRule subjectRule,
                 FillRule clipRule, const Options& options) {
   const Grid grid = resolveGrid(options.grid, subject, clipPaths);  // one grid for both operands
-  // Each operand is snapped and validated once; an intersection reads the clip first (its
-  // errors are reported first, as the ROI is usually the clip).
-  detail::SnappedOperand s, c;
-  if (op == ClipOp::Intersection) {
-    c = detail::snapOperand(clipPaths, 1, clipRule, grid);
-    // With a convex clip the fast path never asks whether the subject is convex.
-    s = detail::snapOperand(subject, 0, subjectRule, grid, c.convex == 0);
-  } else {
-    s = detail::snapOperand(subject, 0, subjectRule, grid);
-    c = detail::snapOperand(clipPaths, 1, clipRule, grid);
-  }
   const detail::WorkspaceLease ws;
-  return detail::clipSnapped(op, s, c, grid, options.limits, *ws);
+  // Each operand is snapped and validated once, into the rings the last call left; an
+  // intersection reads the clip first (its errors are reported first, as the ROI is usually the
+  // clip).
+  detail::SnappedOperand s, c;
+  detail::Rings& sKept = ws->operandRings[0];
+  detail::Rings& cKept = ws->operandRings[1];
+  if (op == ClipOp::Intersection) {
+    c = detail::snapOperand(clipPaths, 1, clipRule, grid, true, std::move(cKept));
+    // With a convex clip the fast path never asks whether the subject is convex.
+    s = detail::snapOperand(subject, 0, subjectRule, grid, c.convex == 0, std::move(sKept));
+  } else {
+    s = detail::snapOperand(subject, 0, subjectRule, grid, true, std::move(sKept));
+    c = detail::snapOperand(clipPaths, 1, clipRule, grid, true, std::move(cKept));
+  }
+  PolygonSet result = detail::clipSnapped(op, s, c, grid, options.limits, *ws);
+  detail::keepIfSmall(s.rings, sKept);
+  detail::keepIfSmall(c.rings, cKept);
+  return result;
 }
 
 PolygonSet intersect(const Paths& subject, const Paths& clipPaths, FillRule rule,

@@ -108,8 +108,8 @@ void snapPoints(const Path& path, std::size_t count, std::size_t pathIndex, Oper
                 const Grid& grid, std::vector<IPoint>& out) {
   const FastSnap fast(grid);
   // Written through a pointer into storage for every point (no capacity test per point), then
-  // cut to the points kept.
-  out.resize(count);
+  // cut to the points kept. A reused array is only grown (resize() zero-fills what it adds).
+  if (out.size() < count) out.resize(count);
   IPoint* const kept = out.data();
   std::size_t n = 0;
   IPoint last{std::int64_t{1} << 62, 0};  // no snapped point
@@ -173,15 +173,21 @@ void checkGrid(const Grid& grid) {
 }  // namespace
 
 std::vector<std::vector<IPoint>> snapRings(const Paths& paths, int operand, const Grid& grid) {
-  checkGrid(grid);
-  std::vector<std::vector<IPoint>> rings;
-  rings.reserve(paths.size());
-  std::vector<IPoint> ring;
-  for (std::size_t p = 0; p < paths.size(); ++p) {
-    snapRing(paths[p], p, operand == 0 ? Operand::Subject : Operand::Clip, grid, ring);
-    if (ring.size() >= 2) rings.push_back(std::move(ring));  // a point encloses nothing
-  }
+  Rings rings;
+  snapRingsInto(paths, operand, grid, rings);
   return rings;
+}
+
+void snapRingsInto(const Paths& paths, int operand, const Grid& grid, Rings& rings) {
+  checkGrid(grid);
+  if (rings.capacity() < paths.size()) rings.reserve(paths.size());
+  std::size_t kept = 0;
+  for (std::size_t p = 0; p < paths.size(); ++p) {
+    if (kept == rings.size()) rings.emplace_back();
+    snapRing(paths[p], p, operand == 0 ? Operand::Subject : Operand::Clip, grid, rings[kept]);
+    if (rings[kept].size() >= 2) ++kept;  // a point encloses nothing: its array is reused
+  }
+  rings.resize(kept);
 }
 
 std::size_t countDegenerate(const Paths& paths, const Grid& grid) {

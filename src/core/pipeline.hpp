@@ -259,6 +259,8 @@ Contours traceContours(const Arrangement& arrangement, TraceScratch& scratch);
 /// Snap one operand's paths to the grid as closed rings of grid points (repeats and straight
 /// runs removed); rings with fewer than 2 points are dropped.
 std::vector<std::vector<IPoint>> snapRings(const Paths& paths, int operand, const Grid& grid);
+/// The same into `rings`, reusing the arrays of the rings it holds.
+void snapRingsInto(const Paths& paths, int operand, const Grid& grid, Rings& rings);
 
 /// A ring's lexicographically smallest vertex and the turn there: for a simple ring, +1 when it
 /// runs counter-clockwise (winds +1 around its inside), -1 clockwise.
@@ -474,8 +476,10 @@ struct SnappedOperand {
   int convex = 0;
 };
 /// `findConvex` false leaves `convex` 0 (a caller that will not take the convex path for it).
+/// The rings are made in `storage` (a workspace's Workspace::operandRings), reusing the arrays it
+/// holds.
 SnappedOperand snapOperand(const Paths& paths, int operand, FillRule rule, const Grid& grid,
-                           bool findConvex = true);
+                           bool findConvex = true, Rings storage = {});
 
 /// clip() on snapped operands (boolean_op.cpp): the convex fast path for an intersection with a
 /// convex operand, else the general path. On the general path the subject's rings are freed

@@ -95,9 +95,14 @@ PolygonSet PreparedRegion::clip(ClipOp op, const Paths& subject, FillRule subjec
   if (!impl_->takes(subject)) {
     return roiclip::clip(op, subject, impl_->source, subjectRule, impl_->rule, impl_->options);
   }
-  detail::SnappedOperand s = detail::snapOperand(subject, 0, subjectRule, impl_->grid);
   const detail::WorkspaceLease ws(impl_->workspace);
-  return detail::clipSnapped(op, s, impl_->region, impl_->grid, impl_->options.limits, *ws);
+  detail::Rings& kept = ws->operandRings[0];
+  detail::SnappedOperand s =
+      detail::snapOperand(subject, 0, subjectRule, impl_->grid, true, std::move(kept));
+  PolygonSet result =
+      detail::clipSnapped(op, s, impl_->region, impl_->grid, impl_->options.limits, *ws);
+  detail::keepIfSmall(s.rings, kept);
+  return result;
 }
 
 PolygonSet PreparedRegion::clip(ClipOp op, const PolygonSet& subject) const {

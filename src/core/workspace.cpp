@@ -40,6 +40,13 @@ void Workspace::recycleAll() {
   forEachLent([](auto& v) { recycle(v); });
 }
 
+void keepIfSmall(Rings& used, Rings& kept) {
+  std::size_t bytes = used.capacity() * sizeof(used[0]);
+  for (const std::vector<IPoint>& ring : used) bytes += ring.capacity() * sizeof(IPoint);
+  if (bytes <= kKeptOutputBytes) kept.swap(used);
+  Rings().swap(used);
+}
+
 template <class F>
 void Workspace::forEachLent(F f) {
   f(arrangement.vertices);
@@ -71,6 +78,7 @@ void Workspace::release() {
   trace.forEach([](auto& v) { std::remove_reference_t<decltype(v)>().swap(v); });
   nesting.forEach([](auto& v) { std::remove_reference_t<decltype(v)>().swap(v); });
   forEachLent([](auto& v) { std::remove_reference_t<decltype(v)>().swap(v); });
+  for (Rings& rings : operandRings) Rings().swap(rings);
 }
 
 WorkspaceLease::WorkspaceLease() { acquire(threadWorkspace()); }

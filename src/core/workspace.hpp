@@ -44,6 +44,8 @@ void keepIfSmall(std::vector<T>& used, std::vector<T>& kept) {
   if (used.capacity() * sizeof(T) <= kKeptOutputBytes) kept.swap(used);
   std::vector<T>().swap(used);
 }
+/// The same for a set of rings (a snapped operand's), by the storage of all of them together.
+void keepIfSmall(Rings& used, Rings& kept);
 
 /// The sweep's status (the active pieces bottom to top) is an intrusive red-black tree over a
 /// pool of nodes: no allocation per insertion, and a node keeps its place in the tree when the
@@ -302,6 +304,9 @@ struct NestingScratch {
 struct Workspace {
   /// Storage lent to the arrangement of a call (split_edges.cpp), given back by resolve().
   Arrangement arrangement;
+  /// Storage lent to a call's snapped operands (snapOperand()), given back by keepIfSmall(): a
+  /// small call (W4) snaps into the rings the call before it left, with no allocation.
+  std::array<Rings, kOperands> operandRings;
   // Sweep (split_edges.cpp).
   std::vector<SweepPiece> pieces;
   std::vector<XPoint> exactRights;  ///< the right ends of the pieces of exact edges
