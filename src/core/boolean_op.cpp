@@ -136,6 +136,7 @@ PolygonSet intersectConvexRing(const SnappedOperand& other, const SnappedOperand
 // the sweep's peak).
 PolygonSet resolveGeneral(Rings& subject, const Rings* clip, const BooleanSpec& spec,
                           const Grid& grid, Workspace& ws) {
+  ws.generalPathUsed = true;
   std::vector<InputEdge>& edges = ws.edges;
   edges.clear();
   appendRingEdges(subject, 0, edges);

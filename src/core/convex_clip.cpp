@@ -342,6 +342,7 @@ void preclipConvex(const Rings& rings, const std::vector<IPoint>& convexRing,
 void preclipConvex(const Rings& rings, const std::vector<IPoint>& convexRing, int orientation,
                    Workspace& workspace, std::vector<InputEdge>& edges,
                    std::vector<ExactEdge>& out) {
+  workspace.generalPathUsed = true;
   if (orientation == 0) throw InternalError("preclipConvex: clip ring is not convex");
   // Reserved up front for every vertex when that is large: at 100k vertices growth by doubling
   // doubled the bytes allocated, and fresh pages cost more than the clipping (kernel page

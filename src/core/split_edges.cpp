@@ -591,6 +591,7 @@ void sortStarts(std::vector<SweepStart>& starts) {
 Arrangement splitEdges(const std::vector<InputEdge>& edges,
                        const std::vector<ExactEdge>& exactEdges, const BooleanSpec& spec,
                        Workspace& workspace) {
+  workspace.generalPathUsed = true;
   return Sweep(edges, exactEdges, spec, workspace).run();
 }
 

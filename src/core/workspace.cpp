@@ -15,6 +15,10 @@ Workspace& threadWorkspace() {
 }  // namespace
 
 void Workspace::recycleAll() {
+  chains.forEach([](auto& v) { recycle(v); });
+  weiler.forEach([](auto& v) { recycle(v); });
+  if (!generalPathUsed) return;
+  generalPathUsed = false;
   recycle(pieces);
   recycle(exactRights);
   recycle(starts);
@@ -33,8 +37,6 @@ void Workspace::recycleAll() {
   recycle(next);
   recycle(clipped);
   recycle(edges);
-  chains.forEach([](auto& v) { recycle(v); });
-  weiler.forEach([](auto& v) { recycle(v); });
   trace.forEach([](auto& v) { recycle(v); });
   nesting.forEach([](auto& v) { recycle(v); });
   forEachLent([](auto& v) { recycle(v); });

@@ -332,10 +332,16 @@ struct Workspace {
   // Nesting (nesting.cpp).
   NestingScratch nesting;
 
+  /// Set by the stages of the general path (preclipConvex(), resolveGeneral(), splitEdges()),
+  /// the only ones that take arrays beyond `chains`, `weiler` and `operandRings`: recycleAll()
+  /// recycles the others only after a call that set it. A call on a sweep-free path (W4's small
+  /// contours) then walks 17 arrays, not 66.
+  bool generalPathUsed = false;
+
   /// Re-entry guard: set while a call uses this workspace (see WorkspaceLease).
   std::atomic<bool> busy{false};
 
-  /// Empty every array, keeping the capacity of those up to kKeptScratchBytes.
+  /// Empty every array the call used, keeping the capacity of those up to kKeptScratchBytes.
   void recycleAll();
   /// Free every array.
   void release();
