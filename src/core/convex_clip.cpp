@@ -293,9 +293,10 @@ int convexOrientation(const std::vector<IPoint>& ring) {
   int turn = 0;
   int xFlips = 0, yFlips = 0;
   int lastDx = 0, lastDy = 0;
+  const auto at = [&](std::size_t i) { return ring[i < n ? i : i - n]; };  // i < 2 n
   for (std::size_t i = 0; i < n; ++i) {
-    const IPoint a = ring[i], b = ring[(i + 1) % n], c = ring[(i + 2) % n];
-    const int o = orient(a, b, c);
+    const IPoint a = ring[i], b = at(i + 1), c = at(i + 2);
+    const int o = orientInGrid(a, b, c);
     if (o == 0) return 0;  // straight runs were merged: this is a reversal
     if (turn == 0) turn = o;
     if (o != turn) return 0;
@@ -313,7 +314,7 @@ int convexOrientation(const std::vector<IPoint>& ring) {
   // Close the cycle of sign changes (first non-zero direction against the last).
   int firstDx = 0, firstDy = 0;
   for (std::size_t i = 0; i < n && (firstDx == 0 || firstDy == 0); ++i) {
-    const IPoint a = ring[i], b = ring[(i + 1) % n];
+    const IPoint a = ring[i], b = at(i + 1);
     if (firstDx == 0) firstDx = (b.x > a.x) - (b.x < a.x);
     if (firstDy == 0) firstDy = (b.y > a.y) - (b.y < a.y);
   }

@@ -360,7 +360,8 @@ bool groupRingsForConvex(const Rings& rings, const std::vector<IPoint>& convex,
                          int convexOrientation, RingGroups& out);
 
 /// The ring's orientation (+1 counter-clockwise in the raw frame, -1 clockwise) when it is a
-/// strictly convex polygon winding once, else 0.
+/// strictly convex polygon winding once, else 0. The ring's points are grid points (snapped:
+/// within the grid's range, see orientInGrid()).
 int convexOrientation(const std::vector<IPoint>& ring);
 
 /// Convex pre-clip (convex_clip.cpp): Sutherland-Hodgman against each half-plane of a convex

@@ -32,6 +32,30 @@ TEST(ConvexOrientation, RecognisesConvexRingsWindingOnce) {
   EXPECT_EQ(detail::convexOrientation({{0, 0}, {10, 0}}), 0);
 }
 
+// Triangles and quadrilaterals of points at the ends of the grid's range, where the products of
+// the orientation test reach 2^62: a ring of at most 4 vertices whose turns all have one sign
+// (the exact 128-bit orient()) winds once, so that sign is its convex orientation.
+TEST(ConvexOrientation, AgreesWithExactTurnsAtTheRangesEnds) {
+  const std::int64_t m = Grid::kMaxUnits;
+  const std::int64_t values[] = {-m, -m + 1, -1, 0, 1, m - 1, m};
+  std::mt19937 rng(20261203);
+  int convex = 0;
+  for (int trial = 0; trial < 20000; ++trial) {
+    std::vector<IPoint> ring(3 + rng() % 2);
+    for (IPoint& p : ring) p = {values[rng() % 7], values[rng() % 7]};
+    int turn = 0;
+    for (std::size_t i = 0; i < ring.size(); ++i) {
+      const int o =
+          detail::orient(ring[i], ring[(i + 1) % ring.size()], ring[(i + 2) % ring.size()]);
+      turn = o == 0 || (turn != 0 && o != turn) ? 2 : turn == 2 ? 2 : o;
+    }
+    const int expected = turn == 2 ? 0 : turn;
+    ASSERT_EQ(detail::convexOrientation(ring), expected) << "trial " << trial;
+    convex += expected != 0 ? 1 : 0;
+  }
+  EXPECT_GT(convex, 1000);
+}
+
 // The pre-clipped edges of `rings` resolved alone (stages 1 to 4), as the fast path does.
 PolygonSet resolvePreclipped(const std::vector<detail::ExactEdge>& edges, FillRule rule) {
   const detail::Arrangement a = detail::splitEdges({}, edges, stages::simplifyWith(rule));
