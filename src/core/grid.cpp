@@ -8,6 +8,9 @@
 #include <cstdio>
 #include <cstring>
 #include <string>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 #include <roiclip/roiclip.hpp>
 
@@ -138,6 +141,68 @@ double decimalOrigin(double lo, double hi, double s) {
 
 namespace detail {
 
+void Box::add(const Paths& paths) {
+  // One branch-free pass: minpd / maxpd on each point's (x, y) (NaN fails every comparison, so
+  // it leaves the box as it is), and the bits of each coordinate's distance from its short
+  // rounding to an integer or'ed (as offGridBits(); NaN and infinity leave bits too). Only an
+  // infinite coordinate needs the second pass, which skips its point.
+  constexpr double kRound = 6755399441055744.0;  // 1.5 * 2^52, as detail::roundToUnits
+  static_assert(sizeof(Point) == 2 * sizeof(double), "a path is its coordinates in a row");
+  double lo[2] = {minX, minY}, hi[2] = {maxX, maxY};
+  std::uint64_t offInteger = 0;
+  const auto bitsOf = [](double d) {
+    std::uint64_t bits = 0;
+    std::memcpy(&bits, &d, sizeof bits);
+    return bits;
+  };
+#if defined(__SSE2__)
+  __m128d low = _mm_loadu_pd(lo), high = _mm_loadu_pd(hi), off = _mm_setzero_pd();
+  const __m128d round = _mm_set1_pd(kRound);
+  for (const Path& path : paths) {
+    for (const Point& p : path) {
+      const __m128d v = _mm_loadu_pd(&p.x);
+      low = _mm_min_pd(v, low);  // v < low ? v : low, lane by lane
+      high = _mm_max_pd(v, high);
+      off = _mm_or_pd(off, _mm_sub_pd(v, _mm_sub_pd(_mm_add_pd(v, round), round)));
+    }
+  }
+  _mm_storeu_pd(lo, low);
+  _mm_storeu_pd(hi, high);
+  double offLanes[2];
+  _mm_storeu_pd(offLanes, off);
+  for (const double d : offLanes) offInteger |= bitsOf(d);
+#else
+  for (const Path& path : paths) {
+    for (const Point& p : path) {
+      const double v[2] = {p.x, p.y};
+      for (int axis = 0; axis < 2; ++axis) {
+        lo[axis] = v[axis] < lo[axis] ? v[axis] : lo[axis];
+        hi[axis] = v[axis] > hi[axis] ? v[axis] : hi[axis];
+        offInteger |= bitsOf(v[axis] - ((v[axis] + kRound) - kRound));
+      }
+    }
+  }
+#endif
+  // The short rounding is exact below 2^51 in magnitude only (from -2^52 to -2^51 it keeps
+  // halves): a larger box is not called integral. -0.0 is a zero distance.
+  integral = integral && (offInteger & ~(std::uint64_t{1} << 63)) == 0 &&
+             std::max({-lo[0], -lo[1], hi[0], hi[1]}) < 0x1p51;
+  if (std::isfinite(lo[0]) && std::isfinite(lo[1]) && std::isfinite(hi[0]) &&
+      std::isfinite(hi[1])) {
+    minX = lo[0], minY = lo[1], maxX = hi[0], maxY = hi[1];
+    return;
+  }
+  for (const Path& path : paths) {
+    for (const Point& p : path) {
+      if (!std::isfinite(p.x) || !std::isfinite(p.y)) continue;
+      minX = std::min(minX, p.x);
+      maxX = std::max(maxX, p.x);
+      minY = std::min(minY, p.y);
+      maxY = std::max(maxY, p.y);
+    }
+  }
+}
+
 Grid fitBinaryGrid(const Box& box) {
   const double extent = extentOf(box);
   if (!std::isfinite(extent)) {
@@ -232,6 +297,7 @@ Grid resolveGrid(const Grid& grid, const Paths& subject, const Paths& clip) {
   const Grid binary = detail::fitBinaryGrid(box);
   // Data the power-of-two grid holds (pixels, binary fractions) keeps it; only data it would
   // move looks for a decimal grid that holds it.
+  if (box.integral && binary.scale >= 1.0) return binary;  // pixels: no second pass
   if (detail::holdsExactly(binary, subject) && detail::holdsExactly(binary, clip)) return binary;
   return detail::fitDecimalGrid(box, subject, clip, detail::DecimalPick::Coarsest).value_or(binary);
 }

@@ -417,35 +417,11 @@ PolygonSet booleanGeneral(const Paths& subject, const Paths* clipPaths, const Bo
 /// with a NaN may count): the snapping reports them, naming the path and vertex.
 struct Box {
   double minX = INFINITY, maxX = -INFINITY, minY = INFINITY, maxY = -INFINITY;
-  void add(const Paths& paths) {
-    // One branch-free pass (it vectorises): NaN fails every comparison, so it leaves the box as
-    // it is. Only an infinite coordinate needs the second pass, which skips its point.
-    double lo[2] = {minX, minY}, hi[2] = {maxX, maxY};
-    for (const Path& path : paths) {
-      static_assert(sizeof(Point) == 2 * sizeof(double), "a path is its coordinates in a row");
-      const double* v = path.empty() ? nullptr : &path.front().x;
-      for (std::size_t i = 0, n = 2 * path.size(); i < n; i += 2) {
-        for (int axis = 0; axis < 2; ++axis) {
-          lo[axis] = v[i + axis] < lo[axis] ? v[i + axis] : lo[axis];
-          hi[axis] = v[i + axis] > hi[axis] ? v[i + axis] : hi[axis];
-        }
-      }
-    }
-    if (std::isfinite(lo[0]) && std::isfinite(lo[1]) && std::isfinite(hi[0]) &&
-        std::isfinite(hi[1])) {
-      minX = lo[0], minY = lo[1], maxX = hi[0], maxY = hi[1];
-      return;
-    }
-    for (const Path& path : paths) {
-      for (const Point& p : path) {
-        if (!std::isfinite(p.x) || !std::isfinite(p.y)) continue;
-        minX = std::min(minX, p.x);
-        maxX = std::max(maxX, p.x);
-        minY = std::min(minY, p.y);
-        maxY = std::max(maxY, p.y);
-      }
-    }
-  }
+  /// Every coordinate added is a finite integer below 2^51 in magnitude (false also when one is
+  /// larger): then every power-of-two grid of scale 1 or more holds them all (resolveGrid()).
+  bool integral = true;
+  /// One pass over the coordinates (grid.cpp).
+  void add(const Paths& paths);
   [[nodiscard]] bool empty() const { return !(minX <= maxX); }
 };
 

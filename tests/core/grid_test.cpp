@@ -183,5 +183,85 @@ TEST(Grid, PreparedRegionGivesTheFreeFunctionsDecimalResults) {
   }
 }
 
+// The box's integral flag: set only when every coordinate is a finite integer below 2^51 in
+// magnitude (from -2^52 to -2^51 the short rounding keeps halves).
+TEST(Grid, TheBoxIsIntegralOnlyForFiniteIntegers) {
+  const auto integral = [](std::initializer_list<double> xs) {
+    Path path;
+    for (const double x : xs) path.push_back({x, 7.0});
+    detail::Box box;
+    box.add({path});
+    return box.integral;
+  };
+  EXPECT_TRUE(integral({0.0, -0.0, 1.0, -1.0, 1920.0, 0x1p50, -0x1p50 - 1, 0x1p51 - 1}));
+  EXPECT_FALSE(integral({0.0, 0.5}));
+  EXPECT_FALSE(integral({0.0, -1.25}));
+  EXPECT_FALSE(integral({0.0, 0x1p51 + 0.5}));
+  EXPECT_FALSE(integral({0.0, -0x1p51 - 1.5}));
+  EXPECT_FALSE(integral({0.0, -0x1p51 - 1.0}));  // an integer, but past the short rounding
+  EXPECT_FALSE(integral({0.0, 0x1p52}));
+  EXPECT_FALSE(integral({0.0, 1e-300}));
+  EXPECT_FALSE(integral({0.0, std::nan("")}));
+  EXPECT_FALSE(integral({0.0, INFINITY}));
+  EXPECT_FALSE(integral({0.0, -INFINITY}));
+  detail::Box box;  // integral until a path that is not
+  box.add({{{1, 2}, {3, 4}}});
+  EXPECT_TRUE(box.integral);
+  box.add({{{1, 2.5}}});
+  EXPECT_FALSE(box.integral);
+  box.add({{{1, 2}}});
+  EXPECT_FALSE(box.integral);
+}
+
+// resolveGrid() takes the power-of-two grid without the second pass (holdsExactly()) for integer
+// data; on random data of every kind it chooses what the two passes choose.
+TEST(Grid, TheIntegerShortcutChoosesWhatTheExactTestChooses) {
+  const auto reference = [](const Paths& a, const Paths& b) {
+    detail::Box box;
+    box.add(a);
+    box.add(b);
+    if (box.empty()) return Grid::fixed(1.0);
+    const Grid binary = detail::fitBinaryGrid(box);
+    if (detail::holdsExactly(binary, a) && detail::holdsExactly(binary, b)) return binary;
+    return detail::fitDecimalGrid(box, a, b, detail::DecimalPick::Coarsest).value_or(binary);
+  };
+  std::mt19937 rng(20261203);
+  int shortcut = 0;
+  for (int trial = 0; trial < 4000; ++trial) {
+    const int kind = trial % 6;
+    const double span = std::ldexp(1.0, int(rng() % 60));  // up to 2^59: past the short rounding
+    const auto coordinate = [&] {
+      const double v = std::floor(std::uniform_real_distribution<double>(-span, span)(rng));
+      switch (kind) {
+        case 0:
+          return v;  // integers
+        case 1:
+          return v + 0.5;  // halves (a grid of scale 2 or more)
+        case 2:
+          return v / 100.0;  // decimals
+        case 3:
+          return rng() % 8 == 0 ? v + 0.25 : v;  // mostly integers
+        case 4:
+          return rng() % 16 == 0 ? std::nan("") : v;  // integers and NaN (snapping rejects it)
+        default:
+          return v * 3.0;
+      }
+    };
+    Paths a(1), b(1);
+    for (int i = 0; i < 6; ++i) a[0].push_back({coordinate(), coordinate()});
+    for (int i = 0; i < 4; ++i) b[0].push_back({coordinate(), coordinate()});
+    const Grid expected = reference(a, b);
+    const Grid got = resolveGrid(Grid::fitted(), a, b);
+    ASSERT_EQ(got.scale, expected.scale) << "trial " << trial;
+    ASSERT_EQ(got.origin.x, expected.origin.x) << "trial " << trial;
+    ASSERT_EQ(got.origin.y, expected.origin.y) << "trial " << trial;
+    detail::Box box;
+    box.add(a);
+    box.add(b);
+    shortcut += box.integral && got.scale >= 1.0 ? 1 : 0;
+  }
+  EXPECT_GT(shortcut, 500);
+}
+
 }  // namespace
 }  // namespace roiclip
