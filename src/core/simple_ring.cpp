@@ -20,6 +20,9 @@
 // shared vertex and are not collinear (snapRings() leaves no straight-on vertex, and a spike is
 // a collinear overlap), and no other two edges meet at all.
 #include <algorithm>
+#include <array>
+#include <cstdint>
+#include <utility>
 
 #include <boost/sort/spreadsort/integer_sort.hpp>
 
@@ -152,12 +155,52 @@ class ChainSweep {
       below_->assign(count_, kNotReached);
       s_.reached.clear();
     }
-    // Spreadsort on the keys, one per vertex: the sweep visits them in this order.
-    boost::sort::spreadsort::integer_sort(
-        events.begin(), events.end(),
-        [](const ChainEvent& e, unsigned shift) { return e.key >> shift; },
-        [](const ChainEvent& a, const ChainEvent& b) { return a.key < b.key; });
+    sortEvents();  // the sweep visits the vertices in this order
     return true;
+  }
+
+  // Sorts the events by key. Many: a least-significant-digit radix sort over the bits in which
+  // the keys differ (a pixel contour's x and y each span 11 bits or less: two passes), through
+  // the scratch's second array. Few: spreadsort (a comparison sort at this size).
+  void sortEvents() {
+    std::vector<ChainEvent>& events = s_.events;
+    if (events.size() < kRadixFrom) {
+      boost::sort::spreadsort::integer_sort(
+          events.begin(), events.end(),
+          [](const ChainEvent& e, unsigned shift) { return e.key >> shift; },
+          [](const ChainEvent& a, const ChainEvent& b) { return a.key < b.key; });
+      return;
+    }
+    std::uint64_t differ = 0;  // the bits in which some key differs from the first
+    for (const ChainEvent& e : events) differ |= e.key ^ events.front().key;
+    std::vector<ChainEvent>& other = s_.sorted;
+    other.resize(events.size());
+    // The key is x << 32 | y (StartFrame): the digits run over the bits in which y varies, then
+    // those in which x does. (A fitted grid scales pixels by up to 2^20: their units' low bits
+    // are all zero and are skipped.)
+    const auto span = [](std::uint64_t bits, unsigned offset) {
+      if (bits == 0) return std::pair{offset, offset};
+      unsigned low = 0, high = 0;
+      while (((bits >> low) & 1U) == 0) ++low;
+      while ((bits >> high) != 0) ++high;
+      return std::pair{offset + low, offset + high};
+    };
+    for (const auto [from, to] : {span(differ & 0xffffffffU, 0), span(differ >> 32, 32)}) {
+      for (unsigned shift = from; shift < to; shift += kDigitBits) {
+        const unsigned bits = std::min(kDigitBits, to - shift);
+        const std::uint64_t mask = (std::uint64_t{1} << bits) - 1;
+        std::array<std::uint32_t, std::size_t{1} << kDigitBits> start{};
+        for (const ChainEvent& e : events) ++start[(e.key >> shift) & mask];
+        std::uint32_t sum = 0;
+        for (std::size_t d = 0; d <= mask; ++d) {
+          const std::uint32_t c = start[d];
+          start[d] = sum;
+          sum += c;
+        }
+        for (const ChainEvent& e : events) other[start[(e.key >> shift) & mask]++] = e;
+        events.swap(other);
+      }
+    }
   }
 
   // Makes the chain's next edge current (the chain must have one).
@@ -237,6 +280,8 @@ class ChainSweep {
   }
 
   static constexpr int kNotReached = -2;
+  static constexpr std::size_t kRadixFrom = 1024;  // events from which the radix sort is used
+  static constexpr unsigned kDigitBits = 11;       // bits per radix pass
   const std::vector<IPoint>* rings_;
   std::size_t count_;
   ChainScratch& s_;

@@ -114,13 +114,14 @@ struct RingNesting {
 /// simpleRingsRegion()'s per-ring results.
 struct ChainScratch {
   std::vector<ChainNode> chains;
-  std::vector<ChainEvent> events;
+  std::vector<ChainEvent> events, sorted;  ///< sorted: the radix sort's second array
   std::vector<int> below, reached;
   std::vector<RingNesting> nesting;
   template <class F>
   void forEach(F f) {
     f(chains);
     f(events);
+    f(sorted);
     f(below);
     f(reached);
     f(nesting);

@@ -185,6 +185,43 @@ TEST(StageSimpleRing, ALongContourWithASingleCrossing) {
                          stages::generalSimplify({toPath(ring)}, FillRule::NonZero), "bow tie");
 }
 
+// Rings long enough for the radix sort of the sweep's vertex order (1,024 vertices and more),
+// at spans from 2^7 to 2^28 (one to three passes per coordinate, negative coordinates too),
+// some scaled by 2^6 or 2^12 (units with zero low bits):
+// the verdict against brute force, also after a far vertex is moved onto another (a pinch) or
+// two vertices are swapped (a crossing).
+TEST(StageSimpleRing, LongRingsAgreeWithBruteForceAtEverySpan) {
+  std::mt19937 rng(20261203);
+  int simple = 0, total = 0;
+  for (int trial = 0; trial < 24; ++trial) {
+    const double radius = std::ldexp(1.0, 6 + (trial % 8) * 3);  // 2^6 .. 2^27
+    const int n = 1100 + int(rng() % 400);
+    const Point centre{trial % 2 == 0 ? 0.0 : radius / 3, trial % 3 == 0 ? -radius / 2 : 0.0};
+    const Paths paths = {stages::starShapedRing(rng, n, centre, radius, 0.6)};
+    const auto rings = detail::snapRings(paths, 0, Grid::fixed(1));
+    ASSERT_EQ(rings.size(), 1U);
+    Ring ring = rings[0];
+    if (ring.size() < 1024) continue;  // rounding merged too many vertices
+    // Units whose low bits are all zero, as a fitted grid makes of pixels (the sort skips them).
+    const int zeros = (trial / 8) * 6;
+    if (radius * std::ldexp(1.0, zeros) < 0x1p29) {
+      for (IPoint& p : ring)
+        p = {p.x * (std::int64_t{1} << zeros), p.y * (std::int64_t{1} << zeros)};
+    }
+    for (int variant = 0; variant < 3; ++variant) {
+      Ring r = ring;
+      if (variant == 1) r[r.size() / 2] = r[r.size() / 5];  // a pinch far along the ring
+      if (variant == 2) std::swap(r[r.size() / 3], r[r.size() / 3 + 1]);
+      const bool expected = bruteForceSimple(r);
+      ASSERT_EQ(chainSweepSimple(r), expected) << "trial " << trial << " variant " << variant;
+      simple += expected ? 1 : 0;
+      ++total;
+    }
+  }
+  EXPECT_GT(simple, 10);
+  EXPECT_LT(simple, total - 10);
+}
+
 TEST(StageSimpleRing, RotationIndexRejectsMostSelfCrossingRings) {
   EXPECT_TRUE(detail::turnsOnce({{0, 0}, {4, 0}, {4, 4}, {0, 4}}));
   EXPECT_TRUE(detail::turnsOnce({{0, 0}, {0, 4}, {4, 4}, {4, 0}}));   // clockwise: -1
