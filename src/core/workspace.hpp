@@ -336,7 +336,7 @@ struct Workspace {
   /// Set by the stages of the general path (preclipConvex(), resolveGeneral(), splitEdges()),
   /// the only ones that take arrays beyond `chains`, `weiler` and `operandRings`: recycleAll()
   /// recycles the others only after a call that set it. A call on a sweep-free path (W4's small
-  /// contours) then walks 17 arrays, not 66.
+  /// contours) then walks 21 arrays, not 59.
   bool generalPathUsed = false;
 
   /// Re-entry guard: set while a call uses this workspace (see WorkspaceLease).
