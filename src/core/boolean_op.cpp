@@ -3,6 +3,8 @@
 // when it applies, split every self- and mutual intersection, classify by winding number under
 // the fill rules, trace simple contours with the stack method, fix the orientation and nest
 // holes in their outer rings.
+#include <optional>
+
 #include <roiclip/roiclip.hpp>
 
 #include "pipeline.hpp"
@@ -34,9 +36,10 @@ PolygonSet resolve(const std::vector<InputEdge>& edges, const std::vector<ExactE
 
 // Some rings AND one convex ring: the sweep-free paths where they apply, else the pre-clip and
 // stages 1 to 4. `budget` is what is left of Limits::maxCrossings; the sweep's crossings are
-// taken from it.
+// taken from it. `inClosed`, when known (groupRingsForConvex()), is ringsInsideConvex(rings).
 PolygonSet intersectRings(const Rings& rings, FillRule rule, const SnappedOperand& convex,
-                          const Grid& grid, std::uint64_t& budget, Workspace& ws) {
+                          const Grid& grid, std::uint64_t& budget, Workspace& ws,
+                          std::optional<bool> inClosed = std::nullopt) {
   // One contour that does not touch itself (most contours): Weiler-Atherton, no sweep, when
   // its boundary crosses the convex ring's only transversally.
   PolygonSet direct;
@@ -48,7 +51,8 @@ PolygonSet intersectRings(const Rings& rings, FillRule rule, const SnappedOperan
   // inside the ROI), the region they fill, nested by the chain sweep; else Weiler-Atherton over
   // the rings that bound it.
   if (rings.size() > 1) {
-    const bool inside = ringsInsideConvex(rings, convex.rings[0], convex.convex);
+    const bool inside =
+        inClosed ? *inClosed : ringsInsideConvex(rings, convex.rings[0], convex.convex);
     if (ringsAreSimple(rings, ws.chains)) {
       if (inside) return simpleRingsRegion(rings, rule, ws.chains, grid);
       if (intersectSimpleRingsConvex(rings, rule, convex.rings[0], convex.convex, grid, ws.chains,
@@ -113,9 +117,17 @@ PolygonSet intersectConvexRing(const SnappedOperand& other, const SnappedOperand
   if (!isFilled(convex.rule, convex.convex)) return {};
   std::uint64_t budget = limits.maxCrossings;
   RingGroups groups;
-  if (other.rings.size() > 1 &&
-      groupRingsForConvex(other.rings, convex.rings[0], convex.convex, groups) &&
-      (groups.count() > 1 || groups.apart > 0)) {
+  const bool grouped = other.rings.size() > 1 &&
+                       groupRingsForConvex(other.rings, convex.rings[0], convex.convex, groups);
+  // Whether every ring of a group lies in C or on its boundary: the grouping has seen every vertex.
+  const auto inClosed = [&](std::size_t g) {
+    bool all = true;
+    for (std::size_t k = groups.groupStart[g]; k < groups.groupStart[g + 1] && all; ++k) {
+      all = groups.inClosed[std::size_t(groups.rings[k])] != 0;
+    }
+    return all;
+  };
+  if (grouped && (groups.count() > 1 || groups.apart > 0)) {
     std::vector<PolygonSet> parts;
     parts.reserve(groups.count());
     Rings group;
@@ -124,11 +136,14 @@ PolygonSet intersectConvexRing(const SnappedOperand& other, const SnappedOperand
       for (std::size_t k = groups.groupStart[g]; k < groups.groupStart[g + 1]; ++k) {
         group.push_back(other.rings[std::size_t(groups.rings[k])]);
       }
-      parts.push_back(intersectRings(group, other.rule, convex, grid, budget, ws));
+      parts.push_back(intersectRings(group, other.rule, convex, grid, budget, ws, inClosed(g)));
     }
     return mergeGroups(parts);
   }
-  return intersectRings(other.rings, other.rule, convex, grid, budget, ws);
+  // One group of every ring, or no grouping.
+  const std::optional<bool> known =
+      grouped && groups.count() == 1 ? std::optional<bool>(inClosed(0)) : std::nullopt;
+  return intersectRings(other.rings, other.rule, convex, grid, budget, ws, known);
 }
 
 // Stages 1 to 4 of the general path on snapped operands (`clip` null for simplify).

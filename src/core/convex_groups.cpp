@@ -55,21 +55,25 @@ enum class Place {
 };
 
 // Where a ring lies relative to C; for a ring apart from C, `winding` is its winding number
-// around C. kSides as SideLines::classify().
+// around C; `inClosed` whether every vertex lies in C or on its boundary. kSides as
+// SideLines::classify().
 template <int kSides>
 Place placeOf(const std::vector<IPoint>& ring, const SideLines& sides, const CcwRing& c,
-              int& winding) {
+              int& winding, bool& inClosed) {
   winding = 0;
+  inClosed = false;
   if (ring.size() < 3) return Place::Apart;  // a point or a segment: it fills nothing
   const unsigned all = sides.all();
-  unsigned anyLeft = 0, allLeft = all;
+  unsigned anyLeft = 0, allLeft = all, allClosed = all;
   bool vertexInC = false;
   for (const IPoint p : ring) {
     const auto [left, zeros] = sides.classify<kSides>(p);
     anyLeft |= left;
     allLeft &= left;
+    allClosed &= left | zeros;
     vertexInC = vertexInC || (left | zeros) == all;
   }
+  inClosed = allClosed == all;
   // In the closed outer half-plane of one side: at most on C's boundary, around no point of C.
   if (anyLeft != all) return Place::Apart;
   if (allLeft == all) return Place::Inside;
@@ -154,12 +158,17 @@ bool groupRingsForConvex(const Rings& rings, const std::vector<IPoint>& convex,
   const CcwRing c{&convex, convexOrientation < 0};
   std::vector<RingBox> boxes;
   int windingAroundC = 0;
-  const auto place = [&](const std::vector<IPoint>& ring, int& winding) {
-    return withSideCount(sides, [&](auto k) { return placeOf<k()>(ring, sides, c, winding); });
+  const auto place = [&](const std::vector<IPoint>& ring, int& winding, bool& inClosed) {
+    return withSideCount(sides,
+                         [&](auto k) { return placeOf<k()>(ring, sides, c, winding, inClosed); });
   };
+  out.inClosed.assign(rings.size(), 0);
   for (std::size_t r = 0; r < rings.size(); ++r) {
     int winding = 0;
-    if (place(rings[r], winding) == Place::Apart) {
+    bool inClosed = false;
+    const Place where = place(rings[r], winding, inClosed);
+    out.inClosed[r] = inClosed ? 1 : 0;
+    if (where == Place::Apart) {
       windingAroundC += winding;
       ++out.apart;
       continue;

@@ -347,6 +347,9 @@ struct RingGroups {
   std::vector<int> rings;               ///< indices of the rings that meet C, group after group
   std::vector<std::size_t> groupStart;  ///< where each group begins in `rings`, and the end
   std::size_t apart = 0;                ///< rings that do not meet C
+  /// Per ring of the input: 1 when every vertex lies in C or on its boundary (as
+  /// ringsInsideConvex() tells for a set of rings).
+  std::vector<char> inClosed;
   [[nodiscard]] std::size_t count() const { return groupStart.size() - 1; }
 };
 /// Splits `rings` into groups for the intersection with the strictly convex ring `convex`: a ring

@@ -132,7 +132,7 @@ TEST(StageConvexGroups, TheCrossingBudgetCountsEveryGroup) {
 // in some; the ROI a random convex hull. Coarse scenes make rings touch each other and the ROI.
 TEST(StageConvexGroups, RandomScenesMatchTheGeneralPath) {
   std::mt19937 rng(20261203);
-  int grouped = 0;
+  int grouped = 0, inClosed = 0;
   for (int trial = 0; trial < 240; ++trial) {
     const bool coarse = trial % 4 == 3;
     const double cell = coarse ? 12 : 100;
@@ -169,6 +169,19 @@ TEST(StageConvexGroups, RandomScenesMatchTheGeneralPath) {
     if (roi.size() < 3) continue;
     const Grouped g = groupsOf(set, roi);
     grouped += g.ok && (g.groups.count() > 1 || g.groups.apart > 0) ? 1 : 0;
+    if (g.ok) {  // each ring's flag, which the groups' paths take for ringsInsideConvex()
+      const Grid grid = resolveGrid(Options{}.grid, set, Paths{roi});
+      const detail::Rings rings = detail::snapRings(set, 0, grid);
+      const detail::Rings c = detail::snapRings({roi}, 1, grid);
+      ASSERT_EQ(g.groups.inClosed.size(), rings.size());
+      for (std::size_t r = 0; r < rings.size(); ++r) {
+        if (rings[r].size() < 3) continue;  // apart: in no group
+        inClosed += g.groups.inClosed[r] != 0 ? 1 : 0;
+        EXPECT_EQ(g.groups.inClosed[r] != 0,
+                  detail::ringsInsideConvex({rings[r]}, c[0], detail::convexOrientation(c[0])))
+            << "trial " << trial << " ring " << r;
+      }
+    }
     for (FillRule rule : kRules) {
       testing::expectSameSet(intersect(set, {roi}, rule),
                              stages::generalIntersect(set, {roi}, rule, rule),
@@ -176,6 +189,7 @@ TEST(StageConvexGroups, RandomScenesMatchTheGeneralPath) {
     }
   }
   EXPECT_GT(grouped, 150);  // the grouped path was taken in most scenes
+  EXPECT_GT(inClosed, 500);
 }
 
 }  // namespace
