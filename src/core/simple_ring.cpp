@@ -185,7 +185,7 @@ class ChainSweep {
       while ((bits >> high) != 0) ++high;
       return std::pair{offset + low, offset + high};
     };
-    for (const auto [from, to] : {span(differ & 0xffffffffU, 0), span(differ >> 32, 32)}) {
+    for (const auto& [from, to] : {span(differ & 0xffffffffU, 0), span(differ >> 32, 32)}) {
       for (unsigned shift = from; shift < to; shift += kDigitBits) {
         const unsigned bits = std::min(kDigitBits, to - shift);
         const std::uint64_t mask = (std::uint64_t{1} << bits) - 1;
