@@ -117,16 +117,9 @@ PolygonSet intersectConvexRing(const SnappedOperand& other, const SnappedOperand
   if (!isFilled(convex.rule, convex.convex)) return {};
   std::uint64_t budget = limits.maxCrossings;
   RingGroups groups;
+  // The grouping has seen every vertex: it tells whether a group lies in C (groupInClosed()).
   const bool grouped = other.rings.size() > 1 &&
                        groupRingsForConvex(other.rings, convex.rings[0], convex.convex, groups);
-  // Whether every ring of a group lies in C or on its boundary: the grouping has seen every vertex.
-  const auto inClosed = [&](std::size_t g) {
-    bool all = true;
-    for (std::size_t k = groups.groupStart[g]; k < groups.groupStart[g + 1] && all; ++k) {
-      all = groups.inClosed[std::size_t(groups.rings[k])] != 0;
-    }
-    return all;
-  };
   if (grouped && (groups.count() > 1 || groups.apart > 0)) {
     std::vector<PolygonSet> parts;
     parts.reserve(groups.count());
@@ -136,13 +129,14 @@ PolygonSet intersectConvexRing(const SnappedOperand& other, const SnappedOperand
       for (std::size_t k = groups.groupStart[g]; k < groups.groupStart[g + 1]; ++k) {
         group.push_back(other.rings[std::size_t(groups.rings[k])]);
       }
-      parts.push_back(intersectRings(group, other.rule, convex, grid, budget, ws, inClosed(g)));
+      parts.push_back(
+          intersectRings(group, other.rule, convex, grid, budget, ws, groups.groupInClosed(g)));
     }
     return mergeGroups(parts);
   }
   // One group of every ring, or no grouping.
   const std::optional<bool> known =
-      grouped && groups.count() == 1 ? std::optional<bool>(inClosed(0)) : std::nullopt;
+      grouped && groups.count() == 1 ? std::optional<bool>(groups.groupInClosed(0)) : std::nullopt;
   return intersectRings(other.rings, other.rule, convex, grid, budget, ws, known);
 }
 
@@ -164,13 +158,17 @@ PolygonSet resolveGeneral(Rings& subject, const Rings* clip, const BooleanSpec& 
 }  // namespace
 
 SnappedOperand snapOperand(const Paths& paths, int operand, FillRule rule, const Grid& grid,
-                           bool findConvex, Rings storage) {
+                           bool findConvex, Workspace* workspace) {
   SnappedOperand out;
-  out.rings = std::move(storage);
+  if (workspace != nullptr) out.rings.swap(workspace->operandRings[std::size_t(operand)]);
   snapRingsInto(paths, operand, grid, out.rings);
   out.rule = rule;
   out.convex = findConvex && out.rings.size() == 1 ? convexOrientation(out.rings[0]) : 0;
   return out;
+}
+
+void giveBackRings(SnappedOperand& snapped, int operand, Workspace& workspace) {
+  keepIfSmall(snapped.rings, workspace.operandRings[std::size_t(operand)]);
 }
 
 PolygonSet clipSnapped(ClipOp op, SnappedOperand& subject, const SnappedOperand& clip,
@@ -226,19 +224,17 @@ PolygonSet clip(ClipOp op, const Paths& subject, const Paths& clipPaths, FillRul
   // intersection reads the clip first (its errors are reported first, as the ROI is usually the
   // clip).
   detail::SnappedOperand s, c;
-  detail::Rings& sKept = ws->operandRings[0];
-  detail::Rings& cKept = ws->operandRings[1];
   if (op == ClipOp::Intersection) {
-    c = detail::snapOperand(clipPaths, 1, clipRule, grid, true, std::move(cKept));
+    c = detail::snapOperand(clipPaths, 1, clipRule, grid, true, &*ws);
     // With a convex clip the fast path never asks whether the subject is convex.
-    s = detail::snapOperand(subject, 0, subjectRule, grid, c.convex == 0, std::move(sKept));
+    s = detail::snapOperand(subject, 0, subjectRule, grid, c.convex == 0, &*ws);
   } else {
-    s = detail::snapOperand(subject, 0, subjectRule, grid, true, std::move(sKept));
-    c = detail::snapOperand(clipPaths, 1, clipRule, grid, true, std::move(cKept));
+    s = detail::snapOperand(subject, 0, subjectRule, grid, true, &*ws);
+    c = detail::snapOperand(clipPaths, 1, clipRule, grid, true, &*ws);
   }
   PolygonSet result = detail::clipSnapped(op, s, c, grid, options.limits, *ws);
-  detail::keepIfSmall(s.rings, sKept);
-  detail::keepIfSmall(c.rings, cKept);
+  detail::giveBackRings(s, 0, *ws);
+  detail::giveBackRings(c, 1, *ws);
   return result;
 }
 

@@ -74,6 +74,15 @@ double powerOfTen(int k) {
 // grid point round(v * s) gives v back.
 inline bool onDecimalLattice(double v, double s) { return roundUnits(v * s) / s == v; }
 
+constexpr double kRound = 6755399441055744.0;  // 1.5 * 2^52, as detail::roundToUnits
+constexpr std::uint64_t kSignBit = std::uint64_t{1} << 63;
+
+inline std::uint64_t bitsOf(double d) {
+  std::uint64_t bits = 0;
+  std::memcpy(&bits, &d, sizeof bits);
+  return bits;
+}
+
 // The bits left in v - (its grid point's coordinate) over n coordinates, or'ed (without the
 // sign: -0.0 is a zero difference too): zero when scale s holds every one. One branch-free pass
 // (it vectorises). (u + kRound) - kRound rounds u = v * s to its integer n when |u| < 2^51; for
@@ -82,13 +91,9 @@ inline bool onDecimalLattice(double v, double s) { return roundUnits(v * s) / s 
 // coordinate off the grid, or one too large for the short rounding.
 template <bool kPowerOfTwo>
 std::uint64_t offGridBits(const double* v, std::size_t n, double s) {
-  constexpr double kRound = 6755399441055744.0;  // 1.5 * 2^52, as detail::roundToUnits
   const auto bitsOff = [s](double c) {
     const double u = c * s;
-    const double d = kPowerOfTwo ? u - ((u + kRound) - kRound) : c - ((u + kRound) - kRound) / s;
-    std::uint64_t bits = 0;
-    std::memcpy(&bits, &d, sizeof bits);
-    return bits;
+    return bitsOf(kPowerOfTwo ? u - ((u + kRound) - kRound) : c - ((u + kRound) - kRound) / s);
   };
   std::uint64_t a = 0, b = 0;
   std::size_t i = 0;
@@ -97,7 +102,7 @@ std::uint64_t offGridBits(const double* v, std::size_t n, double s) {
     b |= bitsOff(v[i + 1]) | bitsOff(v[i + 3]);
   }
   for (; i < n; ++i) a |= bitsOff(v[i]);
-  return (a | b) & ~(std::uint64_t{1} << 63);
+  return (a | b) & ~kSignBit;
 }
 
 // The smallest k from `k` to `limit` such that every coordinate of `paths` is the double nearest
@@ -146,15 +151,9 @@ void Box::add(const Paths& paths) {
   // it leaves the box as it is), and the bits of each coordinate's distance from its short
   // rounding to an integer or'ed (as offGridBits(); NaN and infinity leave bits too). Only an
   // infinite coordinate needs the second pass, which skips its point.
-  constexpr double kRound = 6755399441055744.0;  // 1.5 * 2^52, as detail::roundToUnits
   static_assert(sizeof(Point) == 2 * sizeof(double), "a path is its coordinates in a row");
   double lo[2] = {minX, minY}, hi[2] = {maxX, maxY};
   std::uint64_t offInteger = 0;
-  const auto bitsOf = [](double d) {
-    std::uint64_t bits = 0;
-    std::memcpy(&bits, &d, sizeof bits);
-    return bits;
-  };
 #if defined(__SSE2__)
   __m128d low = _mm_loadu_pd(lo), high = _mm_loadu_pd(hi), off = _mm_setzero_pd();
   const __m128d round = _mm_set1_pd(kRound);
@@ -185,7 +184,7 @@ void Box::add(const Paths& paths) {
 #endif
   // The short rounding is exact below 2^51 in magnitude only (from -2^52 to -2^51 it keeps
   // halves): a larger box is not called integral. -0.0 is a zero distance.
-  integral = integral && (offInteger & ~(std::uint64_t{1} << 63)) == 0 &&
+  integral = integral && (offInteger & ~kSignBit) == 0 &&
              std::max({-lo[0], -lo[1], hi[0], hi[1]}) < 0x1p51;
   if (std::isfinite(lo[0]) && std::isfinite(lo[1]) && std::isfinite(hi[0]) &&
       std::isfinite(hi[1])) {

@@ -351,6 +351,13 @@ struct RingGroups {
   /// ringsInsideConvex() tells for a set of rings).
   std::vector<char> inClosed;
   [[nodiscard]] std::size_t count() const { return groupStart.size() - 1; }
+  /// Whether every ring of group g lies in C or on its boundary.
+  [[nodiscard]] bool groupInClosed(std::size_t g) const {
+    for (std::size_t k = groupStart[g]; k < groupStart[g + 1]; ++k) {
+      if (inClosed[std::size_t(rings[k])] == 0) return false;
+    }
+    return true;
+  }
 };
 /// Splits `rings` into groups for the intersection with the strictly convex ring `convex`: a ring
 /// that does not meet C (or has fewer than 3 vertices) is left out, and the bounding boxes of the
@@ -456,10 +463,12 @@ struct SnappedOperand {
   int convex = 0;
 };
 /// `findConvex` false leaves `convex` 0 (a caller that will not take the convex path for it).
-/// The rings are made in `storage` (a workspace's Workspace::operandRings), reusing the arrays it
-/// holds.
+/// With a workspace, the rings are made in the arrays its Workspace::operandRings[operand] kept
+/// from the call before; giveBackRings() returns them when the call is done.
 SnappedOperand snapOperand(const Paths& paths, int operand, FillRule rule, const Grid& grid,
-                           bool findConvex = true, Rings storage = {});
+                           bool findConvex = true, Workspace* workspace = nullptr);
+/// Keeps a snapped operand's rings in the workspace for the next call (up to kKeptOutputBytes).
+void giveBackRings(SnappedOperand& snapped, int operand, Workspace& workspace);
 
 /// clip() on snapped operands (boolean_op.cpp): the convex fast path for an intersection with a
 /// convex operand, else the general path. On the general path the subject's rings are freed

@@ -96,12 +96,10 @@ PolygonSet PreparedRegion::clip(ClipOp op, const Paths& subject, FillRule subjec
     return roiclip::clip(op, subject, impl_->source, subjectRule, impl_->rule, impl_->options);
   }
   const detail::WorkspaceLease ws(impl_->workspace);
-  detail::Rings& kept = ws->operandRings[0];
-  detail::SnappedOperand s =
-      detail::snapOperand(subject, 0, subjectRule, impl_->grid, true, std::move(kept));
+  detail::SnappedOperand s = detail::snapOperand(subject, 0, subjectRule, impl_->grid, true, &*ws);
   PolygonSet result =
       detail::clipSnapped(op, s, impl_->region, impl_->grid, impl_->options.limits, *ws);
-  detail::keepIfSmall(s.rings, kept);
+  detail::giveBackRings(s, 0, *ws);
   return result;
 }
 

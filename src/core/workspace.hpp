@@ -309,7 +309,7 @@ struct NestingScratch {
 struct Workspace {
   /// Storage lent to the arrangement of a call (split_edges.cpp), given back by resolve().
   Arrangement arrangement;
-  /// Storage lent to a call's snapped operands (snapOperand()), given back by keepIfSmall(): a
+  /// Storage lent to a call's snapped operands (snapOperand()), given back by giveBackRings(): a
   /// small call (W4) snaps into the rings the call before it left, with no allocation.
   std::array<Rings, kOperands> operandRings;
   // Sweep (split_edges.cpp).
