@@ -12,8 +12,11 @@
 // disjoint; S AND C has no holes (a hole would be a bounded part of the complement of S or of
 // C, and neither has one). Without crossings, S AND C is S, C or empty. O(n m + k log k) for n
 // vertices of S, m of C and k crossings. A ring, simple or not, that lies on the outer side of
-// one side line of C gives nothing. Any other configuration (a ring that is not simple, a vertex
-// on C's boundary, an edge through a corner) returns false: the general path resolves it.
+// one side line of C gives nothing. A vertex of S on C's boundary (on a side, or at a corner) is
+// a crossing, a touch from inside (leaving and entering there) or a touch from outside, by the
+// edges at it (appendCrossings()). Any other configuration (a ring that is not simple, an edge
+// along a side's line or through a corner, two parts of the result meeting at a point, a ring
+// around C touching every corner) returns false: the general path resolves it.
 #include <algorithm>
 
 #include "convex_sides.hpp"
@@ -64,35 +67,85 @@ unsigned classifyVertices(const CcwRing& s, const SideLines& sides, WeilerScratc
   return withSideCount(sides, [&](auto k) { return classifyEach<k()>(s, sides, w, anyOn); });
 }
 
-// Whether some vertex classified by classifyVertices() lies on C's boundary, whether one lies at
-// a corner of C, and whether every vertex lies in C or on its boundary.
-void boundaryVertices(const WeilerScratch& w, unsigned all, std::size_t n, bool& onBoundary,
-                      bool& atCorner, bool& everyInClosed) {
-  onBoundary = false;
-  atCorner = false;
-  everyInClosed = true;
+// The corner of C at vertex k of s (classified by classifyVertices()), or -1. A vertex in C's
+// closed region on two side lines is a corner (C is strictly convex): sides j - 1 and j meet at
+// corner j.
+int cornerAt(const WeilerScratch& w, std::size_t k, unsigned all) {
+  const unsigned on = w.onLine[k];
+  if (__builtin_expect((on & (on - 1)) == 0, 1) || (w.left[k] | on) != all) return -1;
+  const int low = __builtin_ctz(on), high = 31 - __builtin_clz(on);
+  return high == low + 1 ? high : 0;  // sides m - 1 and 0 meet at corner 0
+}
+
+// How the vertices classified by classifyVertices() meet C's boundary.
+struct BoundaryTouch {
+  bool onBoundary = false;    // some vertex lies on C's boundary
+  bool everyInClosed = true;  // every vertex lies in C or on its boundary
+  unsigned corners = 0;       // bit j: some vertex lies at corner j
+  /// A corner of C that is no vertex of s, or -1.
+  [[nodiscard]] int freeCorner(unsigned all) const {
+    return corners == all ? -1 : __builtin_ctz(~corners & all);
+  }
+};
+BoundaryTouch boundaryVertices(const WeilerScratch& w, unsigned all, std::size_t n) {
+  BoundaryTouch t;
   for (std::size_t k = 0; k < n; ++k) {
     const bool inClosed = (w.left[k] | w.onLine[k]) == all;
-    onBoundary = onBoundary || (w.onLine[k] != 0 && inClosed);
-    atCorner = atCorner || (inClosed && (w.onLine[k] & (w.onLine[k] - 1)) != 0);
-    everyInClosed = everyInClosed && inClosed;
+    t.onBoundary = t.onBoundary || (w.onLine[k] != 0 && inClosed);
+    t.everyInClosed = t.everyInClosed && inClosed;
+    const int corner = cornerAt(w, k, all);
+    if (corner >= 0) t.corners |= 1U << corner;
   }
+  return t;
+}
+
+// The crossings of edge k (vertex k to vertex kq, p to q) at its ends where they lie at corners
+// of C: from a corner into its wedge (the other end strictly left of both its sides) entering,
+// into a corner from the wedge leaving. Returns the sides whose lines the edge crosses elsewhere.
+[[gnu::noinline]] unsigned cornerCrossings(int k, std::size_t kq, IPoint p, IPoint q, int ring,
+                                           unsigned all, WeilerScratch& w) {
+  const unsigned lp = w.left[std::size_t(k)], lq = w.left[kq];
+  const unsigned onP = w.onLine[std::size_t(k)], onQ = w.onLine[kq];
+  unsigned changed = lp ^ lq;
+  const auto add = [&](IPoint v, int corner, bool entering) {
+    Crossing x;
+    x.x = XPoint(v);
+    x.edge = k;
+    x.side = corner;
+    x.ring = ring;
+    x.entering = entering;
+    w.crossings.push_back(x);
+  };
+  if (const int corner = cornerAt(w, std::size_t(k), all); corner >= 0) {
+    changed &= ~onP;
+    if ((lq & onP) == onP) add(p, corner, true);
+  }
+  if (const int corner = cornerAt(w, kq, all); corner >= 0) {
+    changed &= ~onQ;
+    if ((lp & onQ) == onQ) add(q, corner, false);
+  }
+  return changed;
 }
 
 // Appends to w.crossings the crossings of ring s (number `ring`, classified by
-// classifyVertices()) with C's boundary, edge by edge and along each edge. False when a meeting
-// is not a transversal crossing away from the vertices of both: an edge along a side's line, or
-// with its line through a corner of C.
+// classifyVertices()) with C's boundary, edge by edge and along each edge. A vertex of s on C's
+// boundary is a crossing of each edge at it that lies in C near it: near a vertex on a side, C is
+// that side's half-plane; near a corner j, the wedge of sides j - 1 and j, and the crossing
+// counts as the start of side j. False when an edge runs along a side's line, or when its line
+// passes through a corner of C that is not one of its ends.
 bool appendCrossings(const CcwRing& s, int ring, const CcwRing& c, unsigned all, WeilerScratch& w) {
   const int n = s.size(), m = c.size();
   for (int k = 0; k < n; ++k) {
-    const std::size_t kq = std::size_t((k + 1) % n);
+    const std::size_t kq = k + 1 == n ? 0 : std::size_t(k) + 1;
     const unsigned lp = w.left[std::size_t(k)], lq = w.left[kq];
-    if (lp == all && lq == all) continue;  // both ends in C: the edge lies in C
-    if ((w.onLine[std::size_t(k)] & w.onLine[kq]) != 0) return false;  // along a side's line
-    const IPoint p = s[k], q = s[(k + 1) % n];
+    if ((lp & lq) == all) continue;  // both ends in C: the edge lies in C
+    const unsigned onP = w.onLine[std::size_t(k)], onQ = w.onLine[kq];
+    if ((onP & onQ) != 0) return false;  // along a side's line
+    const IPoint p = s[k], q = s[int(kq)];
     const std::size_t before = w.crossings.size();
-    for (unsigned changed = lp ^ lq; changed != 0; changed &= changed - 1) {
+    unsigned changed = lp ^ lq;
+    if (__builtin_expect((onP | onQ) != 0, 0)) changed = cornerCrossings(k, kq, p, q, ring, all, w);
+    for (; changed != 0; changed &= changed - 1) {
       const int j = __builtin_ctz(changed);
       const IPoint a = c[j], b = c[(j + 1) % m];
       const int oa = orientInGrid(p, q, a), ob = orientInGrid(p, q, b);
@@ -106,8 +159,10 @@ bool appendCrossings(const CcwRing& s, int ring, const CcwRing& c, unsigned all,
       x.entering = ((lq >> j) & 1U) != 0;
       w.crossings.push_back(x);
     }
-    std::sort(w.crossings.begin() + std::ptrdiff_t(before), w.crossings.end(),
-              [&](const Crossing& u, const Crossing& v) { return beforeAlong(p, q, u.x, v.x); });
+    if (w.crossings.size() - before > 1) {
+      std::sort(w.crossings.begin() + std::ptrdiff_t(before), w.crossings.end(),
+                [&](const Crossing& u, const Crossing& v) { return beforeAlong(p, q, u.x, v.x); });
+    }
   }
   return true;
 }
@@ -317,21 +372,20 @@ bool intersectSimpleConvex(const std::vector<IPoint>& ring, FillRule rule,
   // No vertex strictly left of some side: the ring lies in that side's closed outer half-plane,
   // and so does every point it winds around, simple or not. Nothing of it is in C.
   if (classifyVertices(s, sides, w, anyOn) != all) return true;
+  int probe = 0;  // a corner of C that is no vertex of S
   if (anyOn != 0) {
-    bool onBoundary = false, atCorner = false, everyInClosed = true;
-    boundaryVertices(w, all, std::size_t(n), onBoundary, atCorner, everyInClosed);
-    if (onBoundary && everyInClosed) {
+    const BoundaryTouch touch = boundaryVertices(w, all, std::size_t(n));
+    if (touch.onBoundary && touch.everyInClosed) {
       // A simple ring in C that touches its boundary (a tag's square at a corner of the ROI):
       // it fills what it fills.
       if (!ringIsSimple(ring, chains, /*turnsChecked=*/true)) return false;
       out = simpleRingRegion(ring, rule, grid);
       return true;
     }
-    // A vertex on a side, of a ring across C: near it C is that side's half-plane, so each edge
-    // at it lies inside or outside by its other end. One edge in, one out: a crossing at the
-    // vertex (found on the edge that reaches the side's line); both in: a touch from inside,
-    // leaving and entering there. At a corner: the general path.
-    if (atCorner) return false;
+    // A vertex on C's boundary, of a ring across C: each edge at it lies inside or outside C
+    // near it (appendCrossings()). One edge in, one out: a crossing at the vertex; both in: a
+    // touch from inside, leaving and entering there; both out: a touch from outside.
+    probe = touch.freeCorner(all);
   }
   if (!ringIsSimple(ring, chains, /*turnsChecked=*/true)) return false;
   if (!isFilled(rule, ccw ? 1 : -1)) return true;  // S fills nothing under its rule
@@ -341,7 +395,9 @@ bool intersectSimpleConvex(const std::vector<IPoint>& ring, FillRule rule,
   if (w.crossings.empty()) {
     if (w.left[0] == all) {
       out = simpleRingRegion(ring, FillRule::NonZero, grid);  // S lies in C
-    } else if (insideRing(s, c[0])) {
+    } else if (probe < 0) {
+      return false;  // S touches every corner of C from outside
+    } else if (insideRing(s, c[probe])) {
       out = simpleRingRegion(convex, FillRule::NonZero, grid);  // C lies in S
     }
     return true;
@@ -386,10 +442,19 @@ bool intersectSimpleRingsConvex(const Rings& rings, FillRule rule,
     const CcwRing s = ringAt(int(r));
     unsigned anyOn = 0;
     if (classifyVertices(s, sides, w, anyOn) != all) continue;  // outside a side line
+    int probe = 0;  // a corner of C that is no vertex of the ring
     if (anyOn != 0) {
-      bool onBoundary = false, atCorner = false, everyInClosed = true;
-      boundaryVertices(w, all, std::size_t(s.size()), onBoundary, atCorner, everyInClosed);
-      if (onBoundary) return false;
+      const BoundaryTouch touch = boundaryVertices(w, all, std::size_t(s.size()));
+      if (touch.onBoundary && touch.everyInClosed) {
+        // In C, touching its boundary (a tag's square at a corner of the ROI): an outer ring
+        // fills what it fills, and the region just outside it is empty, so no walked ring runs
+        // through the touching points. A hole there would touch a walked ring: the general path.
+        if (!rn[r].filledInside) return false;
+        place[r] = kInside;
+        continue;
+      }
+      // Across C: a vertex on its boundary is a crossing or a touch, as for one ring.
+      probe = touch.freeCorner(all);
     }
     if (!appendCrossings(s, int(r), c, all, w)) return false;
     const std::size_t count = w.crossings.size() - std::size_t(w.crossStart[r]);
@@ -398,8 +463,8 @@ bool intersectSimpleRingsConvex(const Rings& rings, FillRule rule,
       place[r] = kAcross;
     } else if (w.left[0] == all) {
       place[r] = kInside;
-    } else if (insideRing(s, c[0])) {
-      return false;  // around C: the general path
+    } else if (probe < 0 || insideRing(s, c[probe])) {
+      return false;  // around C (or touching every corner): the general path
     }
   }
   w.crossStart[ringCount] = int(w.crossings.size());

@@ -109,10 +109,8 @@ TEST(StageSimpleConvex, ARingOutsideOneSideLineGivesNothingSimpleOrNot) {
 
 TEST(StageSimpleConvex, VerticesOnTheBoundaryGoToTheGeneralPath) {
   const Path square = box(0, 0, 10, 10);
-  // An edge along a side's line outside the side, an edge through a corner, a vertex at a corner
-  // of a ring across the square: all resolved by the general path (checkCase compares
-  // intersect()).
-  EXPECT_FALSE(checkCase({{0, 0}, {5, -5}, {5, 5}}, square, FillRule::NonZero, "at a corner"));
+  // An edge along a side's line outside the side, an edge through a corner: resolved by the
+  // general path (checkCase compares intersect()).
   EXPECT_FALSE(checkCase({{12, 0}, {15, 0}, {5, 5}}, square, FillRule::NonZero, "on a line"));
   EXPECT_FALSE(checkCase({{-2, -2}, {12, 12}, {-2, 12}}, square, FillRule::NonZero, "corner"));
   // Outside the square along one side: nothing, taken.
@@ -143,10 +141,53 @@ TEST(StageSimpleConvex, VerticesOnSidesOfARingAcrossTheConvexRing) {
   }
 }
 
-// Coarse random rings against coarse random hulls: many vertices on the hull's sides.
+// A ring across the convex ring with vertices at its corners: near corner j the convex ring is
+// the wedge of sides j - 1 and j, so each edge at the vertex is inside or outside by its other
+// end. Taken, as the general path gives it.
+TEST(StageSimpleConvex, VerticesAtCornersOfARingAcrossTheConvexRing) {
+  const Path square = box(0, 0, 10, 10);
+  const std::pair<Path, const char*> cases[] = {
+      {{{0, 0}, {5, -5}, {5, 5}}, "crossing at a corner"},
+      {{{0, 0}, {6, 2}, {15, 5}, {4, 15}, {2, 6}}, "touching a corner from inside"},
+      {{{0, 0}, {10, 10}, {0, 15}, {-5, 5}}, "a diagonal from corner to corner"},
+      {{{0, 0}, {10, 5}, {15, 15}, {-5, 12}}, "from a corner to the opposite side"},
+      {{{0, 0}, {5, -5}, {16, 4}, {10, 10}, {4, 6}}, "crossing at two corners"},
+      {{{0, 0}, {-1, -5}, {15, -5}, {15, 15}, {-5, 15}, {-5, -1}}, "around it, touching a corner"},
+      {{{0, 0}, {-3, -3}, {3, -3}}, "outside, touching a corner"},
+  };
+  for (FillRule rule : kRules) {
+    for (const auto& [ring, what] : cases) {
+      EXPECT_TRUE(checkCase(ring, square, rule, what)) << what;
+      Path reversedRing(ring.rbegin(), ring.rend());
+      EXPECT_TRUE(checkCase(reversedRing, square, rule, std::string(what) + ", reversed"));
+    }
+  }
+  // Around a diamond whose first corner is its rightmost, a notch's tip at that corner: just
+  // right of the corner lies outside the ring, so a ray from the corner tells nothing.
+  const Path diamond = {{10, 5}, {5, 10}, {0, 5}, {5, 0}};
+  const Path notched = {{-5, -5}, {20, -5}, {20, 4}, {10, 5}, {20, 6}, {20, 20}, {-5, 20}};
+  for (FillRule rule : kRules) {
+    EXPECT_TRUE(checkCase(notched, diamond, rule, "around it, a notch's tip at a corner"));
+  }
+  // Around the square, touching all four corners from outside: no corner is left to tell
+  // whether the square lies inside; the general path.
+  const Path aroundCorners = {{0, 0},   {5, -3}, {10, 0}, {13, 5},
+                              {10, 10}, {5, 13}, {0, 10}, {-3, 5}};
+  EXPECT_FALSE(checkCase(aroundCorners, square, FillRule::NonZero, "touching every corner"));
+  // A corner where two parts of the result meet (the ring touches it from inside, its inside
+  // on both sides of the corner's wedge): whichever path takes it, intersect() must match.
+  const Path twoParts = {{10, 0}, {15, -5}, {15, 15}, {-5, 15}, {-5, -5}, {4, -5}, {0, 10}};
+  for (FillRule rule : kRules) {
+    checkCase(twoParts, square, rule, "two parts meeting at a corner");
+    checkCase(Path(twoParts.rbegin(), twoParts.rend()), square, rule, "two parts, reversed");
+  }
+}
+
+// Coarse random rings against coarse random hulls: many vertices on the hull's sides and at its
+// corners.
 TEST(StageSimpleConvex, RandomRingsWithVerticesOnTheSidesMatchTheGeneralPath) {
   std::mt19937 rng(20261204);
-  int takenOnBoundary = 0;
+  int takenOnBoundary = 0, takenAtCorner = 0;
   for (int trial = 0; trial < 3000; ++trial) {
     const Path s = stages::starShapedRing(rng, 3 + int(rng() % 12), {4, 4}, 4, 0.3);
     Path c = box(0, 0, 1 + double(rng() % 8), 1 + double(rng() % 8));
@@ -168,10 +209,15 @@ TEST(StageSimpleConvex, RandomRingsWithVerticesOnTheSidesMatchTheGeneralPath) {
       }
       return false;
     });
+    const bool atCorner = std::any_of(s.begin(), s.end(), [&](const Point& p) {
+      return std::find(c.begin(), c.end(), p) != c.end();
+    });
     const bool taken = checkCase(s, c, kRules[trial % 4], "trial " + std::to_string(trial));
     takenOnBoundary += taken && onSide ? 1 : 0;
+    takenAtCorner += taken && atCorner ? 1 : 0;
   }
   EXPECT_GT(takenOnBoundary, 300);
+  EXPECT_GT(takenAtCorner, 100);
 }
 
 // A simple ring inside the convex ring that touches its boundary (a tag's square at a corner of
@@ -325,13 +371,67 @@ TEST(StageSimpleConvex, SetsThatNeedMoreGoToTheGeneralPath) {
                      reversed(box(10, 40, 20, 50))};
   // A contour around the whole ROI with a hole across it.
   const Paths around = {box(-50, -50, 150, 150), reversed(box(50, -20, 60, 120))};
-  // A vertex on the ROI's boundary, of a contour across it.
-  const Paths onSide = {{{50, 0}, {60, -10}, {70, 20}}, {{20, -10}, {30, 10}, {10, 10}}};
+  // A hole inside the ROI touching its side, in a contour across it: the walked ring would run
+  // through the touching point.
+  const Paths holeTouching = {box(-10, -10, 50, 50), reversed({{20, 0}, {30, 10}, {10, 10}})};
   for (FillRule rule : {FillRule::EvenOdd, FillRule::NonZero}) {
     EXPECT_FALSE(checkSet(cut, roi, rule, "hole in one of two parts"));
     EXPECT_FALSE(checkSet(around, roi, rule, "around the ROI"));
-    EXPECT_FALSE(checkSet(onSide, roi, rule, "vertex on a side"));
+    EXPECT_FALSE(checkSet(holeTouching, roi, rule, "a hole touching a side"));
   }
+}
+
+// Vertices on the ROI's boundary: a contour across it with a vertex on a side and one at a
+// corner, a tag's square inside touching a corner, one touching a side, a contour outside
+// touching a corner. Taken, as the general path gives it.
+TEST(StageSimpleConvex, SetsWithVerticesOnTheBoundaryWalkLikeOneRing) {
+  const Path roi = box(0, 0, 100, 100);
+  const Paths set = {{{50, 0}, {60, -10}, {70, 20}},
+                     {{20, -10}, {30, 10}, {10, 10}},
+                     {{100, 100}, {120, 90}, {110, 120}, {90, 110}, {80, 80}},
+                     box(0, 80, 15, 100),
+                     {{40, 100}, {45, 90}, {50, 100}, {45, 95}},
+                     {{0, 0}, {-10, 5}, {-10, -10}}};
+  for (FillRule rule : kRules) {
+    EXPECT_TRUE(checkSet(set, roi, rule, "vertices on the boundary"));
+    Paths flipped;
+    for (const Path& ring : set) flipped.push_back(reversed(ring));
+    EXPECT_TRUE(checkSet(flipped, roi, rule, "vertices on the boundary, reversed"));
+  }
+}
+
+// Sets of small rings on a coarse grid against coarse hulls: vertices on sides and at corners,
+// rings inside touching the boundary, holes touching it.
+TEST(StageSimpleConvex, RandomSetsWithVerticesOnTheBoundaryMatchTheGeneralPath) {
+  std::mt19937 rng(20261205);
+  int taken = 0, takenAtCorner = 0;
+  for (int trial = 0; trial < 8000; ++trial) {
+    Paths set;
+    for (int k = 0; k < 2 + int(rng() % 3); ++k) {
+      const Point centre(double(rng() % 13), double(rng() % 13));
+      set.push_back(
+          stages::starShapedRing(rng, 3 + int(rng() % 6), centre, double(1 + rng() % 4), 0.4));
+      if (rng() % 3 == 0) {  // a hole (or island) inside
+        set.push_back(reversed(stages::starShapedRing(rng, 3 + int(rng() % 4), centre, 1, 0.5)));
+      }
+    }
+    std::vector<Point> points;
+    for (int i = 0; i < 3 + int(rng() % 4); ++i) {
+      points.emplace_back(double(2 + rng() % 9), double(2 + rng() % 9));
+    }
+    const Path roi = testing::convexHull({points}, trial % 2 == 1)[0];
+    if (roi.size() < 3) continue;
+    const bool atCorner = std::any_of(set.begin(), set.end(), [&](const Path& ring) {
+      return std::any_of(ring.begin(), ring.end(), [&](const Point& p) {
+        return std::find(roi.begin(), roi.end(), p) != roi.end();
+      });
+    });
+    const bool t = checkSet(set, roi, kRules[trial % 4], "trial " + std::to_string(trial));
+    taken += t ? 1 : 0;
+    takenAtCorner += t && atCorner ? 1 : 0;
+  }
+  EXPECT_GT(taken, 800);
+  EXPECT_GT(takenAtCorner, 150);
 }
 
 // Random sets of concentric star-shaped rings (outer, hole, island, each way round) in a 3 x 3
