@@ -54,47 +54,72 @@ enum class Place {
   Meets,   // meets C otherwise
 };
 
-// Where a ring lies relative to C; for a ring apart from C, `winding` is its winding number
-// around C; `inClosed` whether every vertex lies in C or on its boundary. kSides as
-// SideLines::classify().
-template <int kSides>
-Place placeOf(const std::vector<IPoint>& ring, const SideLines& sides, const CcwRing& c,
-              int& winding, bool& inClosed) {
-  winding = 0;
-  inClosed = false;
-  if (ring.size() < 3) return Place::Apart;  // a point or a segment: it fills nothing
-  const unsigned all = sides.all();
-  unsigned anyLeft = 0, allLeft = all, allClosed = all;
-  bool vertexInC = false;
-  for (const IPoint p : ring) {
-    const auto [left, zeros] = sides.classify<kSides>(p);
-    anyLeft |= left;
-    allLeft &= left;
-    allClosed &= left | zeros;
-    vertexInC = vertexInC || (left | zeros) == all;
-  }
-  inClosed = allClosed == all;
-  // In the closed outer half-plane of one side: at most on C's boundary, around no point of C.
-  if (anyLeft != all) return Place::Apart;
-  if (allLeft == all) return Place::Inside;
-  if (vertexInC) return Place::Meets;
-  // Every vertex outside C: an edge may still cross it.
-  const std::size_t n = ring.size();
-  for (std::size_t k = 0; k < n; ++k) {
-    const IPoint p = ring[k], q = ring[(k + 1) % n];
-    const auto mp = sides.classify<kSides>(p), mq = sides.classify<kSides>(q);
-    if (segmentMeetsConvex(p, q, all & ~(mp.left | mp.zeros), all & ~(mq.left | mq.zeros), c)) {
-      return Place::Meets;
-    }
-  }
-  winding = windingAround(ring, c[0]);
-  return Place::Apart;
-}
-
 struct RingBox {
   std::int64_t lo[2], hi[2];
   int ring;
 };
+
+// Where a ring lies relative to C; for a ring apart from C, `winding` is its winding number
+// around C; `inClosed` whether every vertex lies in C or on its boundary. kSides as
+// SideLines::classify(). The corners of the ring's bounding box decide most rings: all four
+// strictly inside C (convex) put every vertex there; all four strictly right of one side put
+// every vertex there, and such a ring winds around no point of C.
+template <int kSides>
+Place placeOf(const std::vector<IPoint>& ring, const RingBox& box, const SideLines& sides,
+              const CcwRing& c, int& winding, bool& inClosed) {
+  winding = 0;
+  inClosed = false;
+  if (ring.size() < 3) return Place::Apart;  // a point or a segment: it fills nothing
+  const unsigned all = sides.all();
+  unsigned boxLeft = all, boxRight = all;
+  for (const IPoint corner : {IPoint{box.lo[0], box.lo[1]}, IPoint{box.hi[0], box.lo[1]},
+                              IPoint{box.hi[0], box.hi[1]}, IPoint{box.lo[0], box.hi[1]}}) {
+    const auto [left, zeros] = sides.classify<kSides>(corner);
+    boxLeft &= left;
+    boxRight &= ~(left | zeros);
+  }
+  if (boxLeft == all) {
+    inClosed = true;
+    return Place::Inside;
+  }
+  if (boxRight != 0) return Place::Apart;
+  unsigned anyLeft = 0, allLeft = all, allClosed = all;
+  bool vertexInC = false, edgeMeets = false;
+  // The sides each vertex lies strictly right of; an edge between two vertices outside C meets
+  // it only if no one side has both ends right of it (tested as the vertices come).
+  unsigned firstOut = 0, lastOut = 0;
+  IPoint last{};
+  const auto edge = [&](IPoint p, unsigned outP, IPoint q, unsigned outQ) {
+    if (!edgeMeets && outP != 0 && outQ != 0 && (outP & outQ) == 0) {
+      edgeMeets = segmentMeetsConvex(p, q, outP, outQ, c);
+    }
+  };
+  for (std::size_t k = 0, n = ring.size(); k < n; ++k) {
+    const IPoint p = ring[k];
+    const auto [left, zeros] = sides.classify<kSides>(p);
+    anyLeft |= left;
+    allLeft &= left;
+    allClosed &= left | zeros;
+    const unsigned out = all & ~(left | zeros);
+    vertexInC = vertexInC || out == 0;
+    if (k == 0) {
+      firstOut = out;
+    } else {
+      edge(last, lastOut, p, out);
+    }
+    last = p;
+    lastOut = out;
+  }
+  edge(last, lastOut, ring[0], firstOut);
+  inClosed = allClosed == all;
+  // In the closed outer half-plane of one side: at most on C's boundary, around no point of C.
+  if (anyLeft != all) return Place::Apart;
+  if (allLeft == all) return Place::Inside;
+  // A vertex in C, or every vertex outside C and an edge crossing it.
+  if (vertexInC || edgeMeets) return Place::Meets;
+  winding = windingAround(ring, c[0]);
+  return Place::Apart;
+}
 
 // Splits boxes[begin, end) into groups by x-y cuts: sorted on one axis, a cut falls wherever no
 // box reaches past it; each part is cut again on the other axis, until neither axis cuts.
@@ -158,18 +183,14 @@ bool groupRingsForConvex(const Rings& rings, const std::vector<IPoint>& convex,
   const CcwRing c{&convex, convexOrientation < 0};
   std::vector<RingBox> boxes;
   int windingAroundC = 0;
-  const auto place = [&](const std::vector<IPoint>& ring, int& winding, bool& inClosed) {
-    return withSideCount(sides,
-                         [&](auto k) { return placeOf<k()>(ring, sides, c, winding, inClosed); });
+  const auto place = [&](const std::vector<IPoint>& ring, const RingBox& box, int& winding,
+                         bool& inClosed) {
+    return withSideCount(
+        sides, [&](auto k) { return placeOf<k()>(ring, box, sides, c, winding, inClosed); });
   };
   out.inClosed.assign(rings.size(), 0);
   for (std::size_t r = 0; r < rings.size(); ++r) {
-    int winding = 0;
-    bool inClosed = false;
-    const Place where = place(rings[r], winding, inClosed);
-    out.inClosed[r] = inClosed ? 1 : 0;
-    if (where == Place::Apart) {
-      windingAroundC += winding;
+    if (rings[r].empty()) {
       ++out.apart;
       continue;
     }
@@ -177,6 +198,15 @@ bool groupRingsForConvex(const Rings& rings, const std::vector<IPoint>& convex,
     for (const IPoint p : rings[r]) {
       box.lo[0] = std::min(box.lo[0], p.x), box.hi[0] = std::max(box.hi[0], p.x);
       box.lo[1] = std::min(box.lo[1], p.y), box.hi[1] = std::max(box.hi[1], p.y);
+    }
+    int winding = 0;
+    bool inClosed = false;
+    const Place where = place(rings[r], box, winding, inClosed);
+    out.inClosed[r] = inClosed ? 1 : 0;
+    if (where == Place::Apart) {
+      windingAroundC += winding;
+      ++out.apart;
+      continue;
     }
     boxes.push_back(box);
   }
