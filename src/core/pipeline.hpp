@@ -22,6 +22,7 @@ struct Workspace;       // workspace.hpp: every array kept between calls
 struct TraceScratch;    // workspace.hpp: the working arrays of traceContours()
 struct NestingScratch;  // workspace.hpp: the working arrays of buildNesting()
 struct ChainScratch;    // workspace.hpp: the working arrays of ringIsSimple()
+struct ChainEvent;      // workspace.hpp: a vertex as ringIsSimple() visits it
 struct WeilerScratch;   // workspace.hpp: the working arrays of intersectSimpleConvex()
 class OutputFrame;      // output.hpp: exact points to doubles
 
@@ -281,6 +282,9 @@ inline LowestVertex lowestVertex(const std::vector<IPoint>& ring) {
 /// `turnsChecked`: the caller has asked turnsOnce() already.
 bool ringIsSimple(const std::vector<IPoint>& ring, ChainScratch& scratch,
                   bool turnsChecked = false);
+/// The simple-ring test's vertex order: `events` sorted by key (equal keys in any order), with
+/// `scratch` as the radix sort's second array. Linear from 1,024 events.
+void sortChainEvents(std::vector<ChainEvent>& events, std::vector<ChainEvent>& scratch);
 /// Whether the ring's edge direction turns exactly once round (rotation index +-1) without a
 /// spike: true for every simple ring (Hopf), false for most that cross themselves (a figure
 /// eight turns 0 times, a ring with a loop twice). O(n), a cross product per vertex: asked
@@ -297,10 +301,10 @@ PolygonSet simpleRingRegion(const std::vector<IPoint>& ring, FillRule rule, cons
 /// true with an empty result for any ring (simple or not) with no vertex strictly inside some
 /// side line of the convex ring. Otherwise returns false, and leaves the case to the general
 /// path, unless the ring is simple (ringIsSimple(), asked after the cheaper test of its
-/// vertices against the convex ring) and every meeting of the boundaries is a
-/// transversal crossing away from the vertices of both (no vertex of the simple ring on the
-/// convex one's boundary, no edge of it along a side's line or with its line through a corner).
-/// O(n m + k log k).
+/// vertices against the convex ring) and every meeting of the boundaries is a transversal
+/// crossing, a vertex of the simple ring on the convex one's boundary (a crossing or a touch
+/// there), or at a corner of it; no edge of the simple ring along a side's line or with its line
+/// through a corner it does not end at. O(n m + k log k).
 bool intersectSimpleConvex(const std::vector<IPoint>& ring, FillRule rule,
                            const std::vector<IPoint>& convex, int convexOrientation,
                            const Grid& grid, ChainScratch& chains, WeilerScratch& scratch,

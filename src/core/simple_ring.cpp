@@ -61,6 +61,42 @@ struct EdgeBelowPoint {
   }
 };
 
+// The digits of a least-significant-digit radix sort of ChainEvent keys, lowest first.
+constexpr unsigned kDigitBits = 11;  // bits per digit at most
+struct Digits {
+  std::array<std::pair<unsigned, std::uint64_t>, 12> at;  // shift and mask
+  std::size_t count = 0;
+};
+// Cuts key bits [low, high) into digits of equal width, kDigitBits at most.
+void cutIntoDigits(unsigned low, unsigned high, Digits& digits) {
+  if (high <= low) return;
+  const unsigned passes = (high - low + kDigitBits - 1) / kDigitBits;
+  const unsigned width = (high - low + passes - 1) / passes;
+  for (unsigned shift = low; shift < high; shift += width) {
+    const unsigned bits = std::min(width, high - shift);
+    digits.at[digits.count++] = {shift, (std::uint64_t{1} << bits) - 1};
+  }
+}
+// Sorts `count` events at `data` by the digits, through `scratch`. Whether they end in `data`
+// (an even number of digits) rather than in `scratch`.
+bool sortDigits(ChainEvent* data, ChainEvent* scratch, std::size_t count, const Digits& digits) {
+  for (std::size_t d = 0; d < digits.count; ++d) {
+    const auto [shift, mask] = digits.at[d];
+    std::array<std::uint32_t, std::size_t{1} << kDigitBits> start{};
+    const ChainEvent* const end = data + count;
+    for (const ChainEvent* e = data; e != end; ++e) ++start[(e->key >> shift) & mask];
+    std::uint32_t sum = 0;
+    for (std::size_t b = 0; b <= mask; ++b) {
+      const std::uint32_t c = start[b];
+      start[b] = sum;
+      sum += c;
+    }
+    for (const ChainEvent* e = data; e != end; ++e) scratch[start[(e->key >> shift) & mask]++] = *e;
+    std::swap(data, scratch);
+  }
+  return digits.count % 2 == 0;
+}
+
 class ChainSweep {
  public:
   // `rings[0 .. count)`; with `below`, each ring's entry receives the chain just below its
@@ -114,6 +150,22 @@ class ChainSweep {
     std::vector<ChainEvent>& events = s_.events;
     chains.clear();
     events.clear();
+    // Sized up front. A large ring's chains are counted first: a comb of 10M vertices has 5M
+    // chains (560 MB), which growing the array would copy and fault in again (1.3 s of 3.8 s).
+    std::size_t vertices = 0;
+    for (std::size_t r = 0; r < count_; ++r) vertices += rings_[r].size();
+    events.reserve(vertices);
+    if (vertices >= kCountChainsFrom) {
+      std::size_t turns = 0;
+      for (std::size_t r = 0; r < count_; ++r) {
+        const std::vector<IPoint>& ring = rings_[r];
+        for (std::size_t i = 0, n = ring.size(); i < n; ++i) {
+          const std::size_t j = i + 1 == n ? 0 : i + 1, k = j + 1 == n ? 0 : j + 1;
+          turns += std::size_t((ring[i] < ring[j]) != (ring[j] < ring[k]));
+        }
+      }
+      chains.reserve(turns);
+    }
     for (int r = 0; r < int(count_); ++r) {
       const IPoint* const points = rings_[std::size_t(r)].data();
       const int n = int(rings_[std::size_t(r)].size());
@@ -155,52 +207,8 @@ class ChainSweep {
       below_->assign(count_, kNotReached);
       s_.reached.clear();
     }
-    sortEvents();  // the sweep visits the vertices in this order
+    sortChainEvents(events, s_.sorted);  // the sweep visits the vertices in this order
     return true;
-  }
-
-  // Sorts the events by key. Many: a least-significant-digit radix sort over the bits in which
-  // the keys differ (a pixel contour's x and y each span 11 bits or less: two passes), through
-  // the scratch's second array. Few: spreadsort (a comparison sort at this size).
-  void sortEvents() {
-    std::vector<ChainEvent>& events = s_.events;
-    if (events.size() < kRadixFrom) {
-      boost::sort::spreadsort::integer_sort(
-          events.begin(), events.end(),
-          [](const ChainEvent& e, unsigned shift) { return e.key >> shift; },
-          [](const ChainEvent& a, const ChainEvent& b) { return a.key < b.key; });
-      return;
-    }
-    std::uint64_t differ = 0;  // the bits in which some key differs from the first
-    for (const ChainEvent& e : events) differ |= e.key ^ events.front().key;
-    std::vector<ChainEvent>& other = s_.sorted;
-    other.resize(events.size());
-    // The key is x << 32 | y (StartFrame): the digits run over the bits in which y varies, then
-    // those in which x does. (A fitted grid scales pixels by up to 2^20: their units' low bits
-    // are all zero and are skipped.)
-    const auto span = [](std::uint64_t bits, unsigned offset) {
-      if (bits == 0) return std::pair{offset, offset};
-      unsigned low = 0, high = 0;
-      while (((bits >> low) & 1U) == 0) ++low;
-      while ((bits >> high) != 0) ++high;
-      return std::pair{offset + low, offset + high};
-    };
-    for (const auto& [from, to] : {span(differ & 0xffffffffU, 0), span(differ >> 32, 32)}) {
-      for (unsigned shift = from; shift < to; shift += kDigitBits) {
-        const unsigned bits = std::min(kDigitBits, to - shift);
-        const std::uint64_t mask = (std::uint64_t{1} << bits) - 1;
-        std::array<std::uint32_t, std::size_t{1} << kDigitBits> start{};
-        for (const ChainEvent& e : events) ++start[(e.key >> shift) & mask];
-        std::uint32_t sum = 0;
-        for (std::size_t d = 0; d <= mask; ++d) {
-          const std::uint32_t c = start[d];
-          start[d] = sum;
-          sum += c;
-        }
-        for (const ChainEvent& e : events) other[start[(e.key >> shift) & mask]++] = e;
-        events.swap(other);
-      }
-    }
   }
 
   // Makes the chain's next edge current (the chain must have one).
@@ -235,11 +243,18 @@ class ChainSweep {
     if (turn == 0) return false;  // overlapping first edges
     if (turn < 0) std::swap(lo, hi);
     // The first chain whose current edge does not pass below p.
-    const auto at = status_.lower_bound(p, EdgeBelowPoint{});
-    ChainNode* above = at == status_.end() ? nullptr : &*at;
+    ChainNode* above = nullptr;
+    Status::iterator at;
+    if (!nearFinger(p, above)) {
+      at = status_.lower_bound(p, EdgeBelowPoint{});
+      above = at == status_.end() ? nullptr : &*at;
+    } else {
+      at = above != nullptr ? status_.iterator_to(*above) : status_.end();
+    }
     ChainNode* below = above != nullptr ? above->below : top_;
     status_.insert_before(at, *lo);
     status_.insert_before(at, *hi);
+    finger_ = hi;
     lo->below = below;
     lo->above = hi;
     hi->below = lo;
@@ -252,6 +267,30 @@ class ChainSweep {
       s_.reached.push_back(lo->ring);
     }
     return !conflict(below, lo) && !conflict(hi, above);
+  }
+
+  // The first chain whose current edge does not pass below p (null: none), when it lies within
+  // a few steps of the last pair inserted (finger_) along the status: chains often start in
+  // order up a side (a comb's teeth start up one line), and then the tree's search, a cache miss
+  // a level on a large status, is not needed. False when it lies further.
+  bool nearFinger(const IPoint& p, ChainNode*& above) const {
+    constexpr int kSteps = 4;
+    const EdgeBelowPoint passesBelow;
+    ChainNode* f = finger_;
+    if (f == nullptr) return false;
+    if (passesBelow(*f, p)) {  // up from the finger to the first that does not pass below
+      ChainNode* g = f->above;
+      for (int k = 0; g != nullptr && passesBelow(*g, p); ++k, g = g->above) {
+        if (k == kSteps) return false;
+      }
+      above = g;
+      return true;
+    }
+    for (int k = 0; f->below != nullptr && !passesBelow(*f->below, p); ++k, f = f->below) {
+      if (k == kSteps) return false;
+    }
+    above = f;
+    return true;
   }
 
   // The chain's current edge ends at an inner vertex of the chain: its next edge becomes current.
@@ -276,22 +315,74 @@ class ChainSweep {
     (above != nullptr ? above->below : top_) = below;
     status_.erase(status_.iterator_to(*lo));
     status_.erase(status_.iterator_to(*hi));
+    if (finger_ == lo || finger_ == hi) finger_ = below != nullptr ? below : above;
     return !conflict(below, above);
   }
 
   static constexpr int kNotReached = -2;
-  static constexpr std::size_t kRadixFrom = 1024;  // events from which the radix sort is used
-  static constexpr unsigned kDigitBits = 11;       // bits per radix pass
+  static constexpr std::size_t kCountChainsFrom = std::size_t{1} << 18;  // vertices
   const std::vector<IPoint>* rings_;
   std::size_t count_;
   ChainScratch& s_;
   std::vector<int>* below_;
   const StartFrame frame_;
   Status status_;
-  ChainNode* top_ = nullptr;  // the top chain of the status, null when it is empty
+  ChainNode* top_ = nullptr;     // the top chain of the status, null when it is empty
+  ChainNode* finger_ = nullptr;  // the last chain inserted, or a chain next to where it was
 };
 
 }  // namespace
+
+// Many events: a least-significant-digit radix sort over the bits in which the keys differ (a
+// pixel contour's x and y each span 11 bits or less: two passes), through `scratch`. Very many
+// (from 2^20) are first split by the top 8 bits of x and each part sorted by the other digits
+// while it lies in the cache: a pass over all of them costs a memory round trip per event (10M
+// events: 100 ms a pass, 6 passes). Few: spreadsort (a comparison sort at this size).
+void sortChainEvents(std::vector<ChainEvent>& events, std::vector<ChainEvent>& scratch) {
+  constexpr std::size_t kRadixFrom = 1024, kSplitFrom = std::size_t{1} << 20;
+  const std::size_t n = events.size();
+  if (n < kRadixFrom) {
+    boost::sort::spreadsort::integer_sort(
+        events.begin(), events.end(),
+        [](const ChainEvent& e, unsigned shift) { return e.key >> shift; },
+        [](const ChainEvent& a, const ChainEvent& b) { return a.key < b.key; });
+    return;
+  }
+  std::uint64_t differ = 0;  // the bits in which some key differs from the first
+  for (const ChainEvent& e : events) differ |= e.key ^ events.front().key;
+  // The key is x << 32 | y (StartFrame): the digits run over the bits in which y varies, then
+  // those in which x does. (A fitted grid scales pixels by up to 2^20: their units' low bits
+  // are all zero and are skipped.)
+  const auto span = [](std::uint64_t bits) {
+    return bits == 0 ? std::pair{0U, 0U}
+                     : std::pair{unsigned(__builtin_ctzll(bits)), 64U - __builtin_clzll(bits)};
+  };
+  const auto [yLow, yHigh] = span(differ & 0xffffffffU);
+  auto [xLow, xHigh] = span(differ & ~std::uint64_t{0xffffffffU});
+  const unsigned topBits = n >= kSplitFrom ? std::min(8U, xHigh - xLow) : 0;
+  xHigh -= topBits;
+  Digits digits;
+  cutIntoDigits(yLow, yHigh, digits);
+  cutIntoDigits(xLow, xHigh, digits);
+  scratch.resize(n);
+  if (topBits == 0) {
+    if (!sortDigits(events.data(), scratch.data(), n, digits)) events.swap(scratch);
+    return;
+  }
+  // The split: by x's top bits into `scratch`, then each part in place there.
+  const std::uint64_t mask = (std::uint64_t{1} << topBits) - 1;
+  std::array<std::uint32_t, 257> start{};
+  for (const ChainEvent& e : events) ++start[((e.key >> xHigh) & mask) + 1];
+  for (std::size_t b = 1; b < start.size(); ++b) start[b] += start[b - 1];
+  std::array<std::uint32_t, 257> next = start;
+  for (const ChainEvent& e : events) scratch[next[(e.key >> xHigh) & mask]++] = e;
+  bool inScratch = true;
+  for (std::size_t b = 0; b <= mask; ++b) {
+    const std::size_t from = start[b], count = start[b + 1] - from;
+    inScratch = sortDigits(scratch.data() + from, events.data() + from, count, digits);
+  }
+  if (inScratch) events.swap(scratch);
+}
 
 bool turnsOnce(const std::vector<IPoint>& ring) {
   const std::size_t n = ring.size();

@@ -185,6 +185,83 @@ TEST(StageSimpleRing, ALongContourWithASingleCrossing) {
                          stages::generalSimplify({toPath(ring)}, FillRule::NonZero), "bow tie");
 }
 
+// The sweep's vertex order (sortChainEvents()) against std::sort: sizes across the comparison
+// sort, the radix sort and its split by x's top bits (from 2^20), keys spanning 1 to 32 bits in
+// each coordinate from random offsets, some with zero low bits (a fitted grid's units) and few
+// distinct values (many equal keys).
+TEST(StageSimpleRing, TheVertexOrderIsSortedAtEverySizeAndSpan) {
+  std::mt19937_64 rng(20261203);
+  const detail::StartFrame frame;
+  const std::size_t sizes[] = {0, 1, 1023, 1024, 5000, 70'000, (std::size_t{1} << 20) + 3};
+  int trial = 0;
+  for (const std::size_t n : sizes) {
+    for (int variant = 0; variant < (n > 100'000 ? 3 : 8); ++variant, ++trial) {
+      const int xBits = 1 + int(rng() % 31), yBits = 1 + int(rng() % 31);
+      const int zeros = variant % 3 == 1 ? 9 : 0;
+      const std::int64_t x0 = std::int64_t(rng() % (1U << 29)) - (1 << 28);
+      const std::int64_t y0 = std::int64_t(rng() % (1U << 29)) - (1 << 28);
+      const std::uint64_t distinct = variant % 4 == 3 ? 7 : ~std::uint64_t{0};
+      std::vector<detail::ChainEvent> events;
+      events.reserve(n);
+      for (std::size_t i = 0; i < n; ++i) {
+        const auto draw = [&](int bits) {
+          const std::uint64_t v =
+              (rng() % distinct) & ((std::uint64_t{1} << std::max(bits - zeros, 0)) - 1);
+          return std::int64_t(v << zeros);
+        };
+        const IPoint p{
+            std::clamp<std::int64_t>(x0 + draw(xBits), -Grid::kMaxUnits, Grid::kMaxUnits),
+            std::clamp<std::int64_t>(y0 + draw(yBits), -Grid::kMaxUnits, Grid::kMaxUnits)};
+        events.emplace_back(frame.key(p), int(i), -1);
+      }
+      std::vector<std::uint64_t> expected;
+      for (const detail::ChainEvent& e : events) expected.push_back(e.key);
+      std::sort(expected.begin(), expected.end());
+      std::vector<detail::ChainEvent> scratch;
+      detail::sortChainEvents(events, scratch);
+      ASSERT_EQ(events.size(), n);
+      bool same = true;
+      std::vector<char> seen(n, 0);
+      for (std::size_t i = 0; i < n; ++i) {
+        same = same && events[i].key == expected[i];
+        seen[std::size_t(events[i].chain)] = 1;  // every event once (its chain field numbers it)
+      }
+      EXPECT_TRUE(same) << "trial " << trial << ": " << n << " events, " << xBits << " x " << yBits
+                        << " bits";
+      EXPECT_EQ(std::count(seen.begin(), seen.end(), 1), std::ptrdiff_t(n)) << "trial " << trial;
+    }
+  }
+}
+
+// Rings of more than 2^20 vertices, whose vertex order is sorted in parts split by the top bits
+// of x (each part then by the other digits): a crenellated square, as given and scaled (units
+// with zero low bits), and with a defect at each end of the x range and in the middle (two far
+// vertices on one point, a tooth turned into a bow tie). Its teeth start chains in order up two
+// sides, as the status's finger search takes them.
+TEST(StageSimpleRing, RingsPastAMillionVerticesKeepTheirVerdict) {
+  const testing::Crenellated shape{70'000};  // 1,120,004 vertices
+  const Ring ring = toRing(shape.path());
+  ASSERT_GT(ring.size(), std::size_t{1} << 20);
+  for (const int zeros : {0, 9}) {
+    Ring scaled = ring;
+    for (IPoint& p : scaled)
+      p = {p.x * (std::int64_t{1} << zeros), p.y * (std::int64_t{1} << zeros)};
+    const std::string what = "scaled by 2^" + std::to_string(zeros);
+    EXPECT_TRUE(chainSweepSimple(scaled)) << what;
+    // A tooth starts at k (4 m + 1) + 1 + 4 i on side k (bottom, right, top, left).
+    const std::size_t side = std::size_t(4 * shape.m + 1);
+    for (const std::size_t at : {std::size_t{1001}, 2 * side + 1, 3 * side + 1 + 4 * 68'000}) {
+      Ring pinched = scaled;
+      pinched[at] = pinched[(at + scaled.size() / 3) % scaled.size()];
+      EXPECT_FALSE(chainSweepSimple(pinched)) << what << ", pinched at " << at;
+      // Vertices at..at + 3 are one tooth: its two parallel edges turned into crossing ones.
+      Ring crossed = scaled;
+      std::swap(crossed[at + 1], crossed[at + 2]);
+      EXPECT_FALSE(chainSweepSimple(crossed)) << what << ", crossed at " << at;
+    }
+  }
+}
+
 // Rings long enough for the radix sort of the sweep's vertex order (1,024 vertices and more),
 // at spans from 2^7 to 2^28 (one to three passes per coordinate, negative coordinates too),
 // some scaled by 2^6 or 2^12 (units with zero low bits):
