@@ -71,13 +71,8 @@ Place placeOf(const std::vector<IPoint>& ring, const RingBox& box, const SideLin
   inClosed = false;
   if (ring.size() < 3) return Place::Apart;  // a point or a segment: it fills nothing
   const unsigned all = sides.all();
-  unsigned boxLeft = all, boxRight = all;
-  for (const IPoint corner : {IPoint{box.lo[0], box.lo[1]}, IPoint{box.hi[0], box.lo[1]},
-                              IPoint{box.hi[0], box.hi[1]}, IPoint{box.lo[0], box.hi[1]}}) {
-    const auto [left, zeros] = sides.classify<kSides>(corner);
-    boxLeft &= left;
-    boxRight &= ~(left | zeros);
-  }
+  const auto [boxLeft, boxRight] =
+      sides.classifyBox<kSides>({box.lo[0], box.lo[1]}, {box.hi[0], box.hi[1]});
   if (boxLeft == all) {
     inClosed = true;
     return Place::Inside;

@@ -59,6 +59,22 @@ struct SideLines {
     }
     return {left, zeros};
   }
+  /// The sides that every corner of the box [lo, hi] lies strictly left of (all of them: the box
+  /// lies inside the convex ring, which is convex), and those every corner lies strictly right
+  /// of (the box lies outside that side's line). kSides as classify().
+  struct BoxSides {
+    unsigned left = 0, right = 0;
+  };
+  template <int kSides = 0>
+  [[nodiscard]] BoxSides classifyBox(IPoint lo, IPoint hi) const {
+    BoxSides box{all(), all()};
+    for (const IPoint corner : {lo, IPoint{hi.x, lo.y}, hi, IPoint{lo.x, hi.y}}) {
+      const auto [left, zeros] = classify<kSides>(corner);
+      box.left &= left;
+      box.right &= ~(left | zeros);
+    }
+    return box;
+  }
 };
 
 /// The most sides for which withSideCount() compiles a loop of its own.

@@ -35,17 +35,38 @@ bool beforeAlong(IPoint a, IPoint b, const XPoint& p, const XPoint& q) {
   return a < b ? c < 0 : c > 0;
 }
 
+constexpr std::size_t kBoxFirstUpTo = 512;  // vertices
+
 // Which side of each side line of C every vertex of s lies on (into w.left and w.onLine, in s's
 // order): bit j of left[k] when strictly left of side j, bit j of onLine[k] when on its line. A
 // vertex on a side line outside C (on the line's extension: strictly right of another side) counts
 // as right of it; an edge from it crosses that line only there, outside the side. Returns the
 // sides some vertex lies strictly left of, and in `anyOn` the side lines some vertex lies on.
+// A ring of up to kBoxFirstUpTo vertices is first tested by its bounding box.
 template <int kSides>
 unsigned classifyEach(const CcwRing& s, const SideLines& sides, WeilerScratch& w, unsigned& anyOn) {
   const std::size_t n = std::size_t(s.size());
   const IPoint* points = s.ring->data();
   unsigned* left = w.left.data();
   unsigned* onLine = w.onLine.data();
+  // A short ring (a blob of a mask, a tag's square) most often lies wholly inside C or outside
+  // one side line, which its bounding box tells at 13 instructions a vertex (W4: -7%). A long
+  // one most often crosses C, where the box only adds them (W1-100k: +1.8%).
+  anyOn = 0;
+  if (n <= kBoxFirstUpTo) {
+    IPoint lo = points[0], hi = points[0];
+    for (std::size_t i = 1; i < n; ++i) {
+      lo = {std::min(lo.x, points[i].x), std::min(lo.y, points[i].y)};
+      hi = {std::max(hi.x, points[i].x), std::max(hi.y, points[i].y)};
+    }
+    const auto box = sides.classifyBox<kSides>(lo, hi);
+    if (box.right != 0) return sides.all() & ~box.right;  // arrays left unset: nothing is in C
+    if (box.left == sides.all()) {
+      std::fill(left, left + n, box.left);
+      std::fill(onLine, onLine + n, 0U);
+      return box.left;
+    }
+  }
   unsigned anyLeft = 0, on = 0;
   // Vertex i of the stored ring is vertex k of the counter-clockwise order.
   for (std::size_t i = 0; i < n; ++i) {
