@@ -24,12 +24,11 @@
 #include <cstdint>
 #include <utility>
 
-#include <boost/sort/spreadsort/integer_sort.hpp>
-
 #include <roiclip/error.hpp>
 
 #include "output.hpp"
 #include "pipeline.hpp"
+#include "radix_sort.hpp"
 #include "workspace.hpp"
 
 namespace roiclip::detail {
@@ -60,42 +59,6 @@ struct EdgeBelowPoint {
     return orientInGrid(c.a, c.b, q) < 0;
   }
 };
-
-// The digits of a least-significant-digit radix sort of ChainEvent keys, lowest first.
-constexpr unsigned kDigitBits = 11;  // bits per digit at most
-struct Digits {
-  std::array<std::pair<unsigned, std::uint64_t>, 12> at;  // shift and mask
-  std::size_t count = 0;
-};
-// Cuts key bits [low, high) into digits of equal width, kDigitBits at most.
-void cutIntoDigits(unsigned low, unsigned high, Digits& digits) {
-  if (high <= low) return;
-  const unsigned passes = (high - low + kDigitBits - 1) / kDigitBits;
-  const unsigned width = (high - low + passes - 1) / passes;
-  for (unsigned shift = low; shift < high; shift += width) {
-    const unsigned bits = std::min(width, high - shift);
-    digits.at[digits.count++] = {shift, (std::uint64_t{1} << bits) - 1};
-  }
-}
-// Sorts `count` events at `data` by the digits, through `scratch`. Whether they end in `data`
-// (an even number of digits) rather than in `scratch`.
-bool sortDigits(ChainEvent* data, ChainEvent* scratch, std::size_t count, const Digits& digits) {
-  for (std::size_t d = 0; d < digits.count; ++d) {
-    const auto [shift, mask] = digits.at[d];
-    std::array<std::uint32_t, std::size_t{1} << kDigitBits> start{};
-    const ChainEvent* const end = data + count;
-    for (const ChainEvent* e = data; e != end; ++e) ++start[(e->key >> shift) & mask];
-    std::uint32_t sum = 0;
-    for (std::size_t b = 0; b <= mask; ++b) {
-      const std::uint32_t c = start[b];
-      start[b] = sum;
-      sum += c;
-    }
-    for (const ChainEvent* e = data; e != end; ++e) scratch[start[(e->key >> shift) & mask]++] = *e;
-    std::swap(data, scratch);
-  }
-  return digits.count % 2 == 0;
-}
 
 class ChainSweep {
  public:
@@ -333,55 +296,8 @@ class ChainSweep {
 
 }  // namespace
 
-// Many events: a least-significant-digit radix sort over the bits in which the keys differ (a
-// pixel contour's x and y each span 11 bits or less: two passes), through `scratch`. Very many
-// (from 2^20) are first split by the top 8 bits of x and each part sorted by the other digits
-// while it lies in the cache: a pass over all of them costs a memory round trip per event (10M
-// events: 100 ms a pass, 6 passes). Few: spreadsort (a comparison sort at this size).
 void sortChainEvents(std::vector<ChainEvent>& events, std::vector<ChainEvent>& scratch) {
-  constexpr std::size_t kRadixFrom = 1024, kSplitFrom = std::size_t{1} << 20;
-  const std::size_t n = events.size();
-  if (n < kRadixFrom) {
-    boost::sort::spreadsort::integer_sort(
-        events.begin(), events.end(),
-        [](const ChainEvent& e, unsigned shift) { return e.key >> shift; },
-        [](const ChainEvent& a, const ChainEvent& b) { return a.key < b.key; });
-    return;
-  }
-  std::uint64_t differ = 0;  // the bits in which some key differs from the first
-  for (const ChainEvent& e : events) differ |= e.key ^ events.front().key;
-  // The key is x << 32 | y (StartFrame): the digits run over the bits in which y varies, then
-  // those in which x does. (A fitted grid scales pixels by up to 2^20: their units' low bits
-  // are all zero and are skipped.)
-  const auto span = [](std::uint64_t bits) {
-    return bits == 0 ? std::pair{0U, 0U}
-                     : std::pair{unsigned(__builtin_ctzll(bits)), 64U - __builtin_clzll(bits)};
-  };
-  const auto [yLow, yHigh] = span(differ & 0xffffffffU);
-  auto [xLow, xHigh] = span(differ & ~std::uint64_t{0xffffffffU});
-  const unsigned topBits = n >= kSplitFrom ? std::min(8U, xHigh - xLow) : 0;
-  xHigh -= topBits;
-  Digits digits;
-  cutIntoDigits(yLow, yHigh, digits);
-  cutIntoDigits(xLow, xHigh, digits);
-  scratch.resize(n);
-  if (topBits == 0) {
-    if (!sortDigits(events.data(), scratch.data(), n, digits)) events.swap(scratch);
-    return;
-  }
-  // The split: by x's top bits into `scratch`, then each part in place there.
-  const std::uint64_t mask = (std::uint64_t{1} << topBits) - 1;
-  std::array<std::uint32_t, 257> start{};
-  for (const ChainEvent& e : events) ++start[((e.key >> xHigh) & mask) + 1];
-  for (std::size_t b = 1; b < start.size(); ++b) start[b] += start[b - 1];
-  std::array<std::uint32_t, 257> next = start;
-  for (const ChainEvent& e : events) scratch[next[(e.key >> xHigh) & mask]++] = e;
-  bool inScratch = true;
-  for (std::size_t b = 0; b <= mask; ++b) {
-    const std::size_t from = start[b], count = start[b + 1] - from;
-    inScratch = sortDigits(scratch.data() + from, events.data() + from, count, digits);
-  }
-  if (inScratch) events.swap(scratch);
+  sortByKey(events, scratch);
 }
 
 bool turnsOnce(const std::vector<IPoint>& ring) {

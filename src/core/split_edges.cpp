@@ -13,11 +13,10 @@
 // Cost: O((n + k) log n) time for n edges and k intersection points, O(n + k) memory.
 #include <algorithm>
 
-#include <boost/sort/spreadsort/integer_sort.hpp>
-
 #include <roiclip/error.hpp>
 
 #include "pipeline.hpp"
+#include "radix_sort.hpp"
 #include "workspace.hpp"
 
 namespace roiclip::detail {
@@ -120,7 +119,7 @@ class Sweep {
         push(e.right, -1);
       }
     }
-    sortStarts(starts_);
+    sortStarts(starts_, ws.sortedStarts);
     out_ = std::move(ws.arrangement);  // the kept capacity (resolve() gives it back)
     out_.vertices.clear();
     out_.pieces.clear();
@@ -579,13 +578,8 @@ class Sweep {
 
 }  // namespace
 
-// Spreadsort (an MSD radix sort falling back to pdqsort on small bins) on the 64-bit keys: on
-// the 80k ends of W1-100k's pixel chain pdqsort on the points took about 9M instructions.
-void sortStarts(std::vector<SweepStart>& starts) {
-  boost::sort::spreadsort::integer_sort(
-      starts.begin(), starts.end(),
-      [](const SweepStart& s, unsigned shift) { return s.key >> shift; },
-      [](const SweepStart& a, const SweepStart& b) { return a.key < b.key; });
+void sortStarts(std::vector<SweepStart>& starts, std::vector<SweepStart>& scratch) {
+  sortByKey(starts, scratch);
 }
 
 Arrangement splitEdges(const std::vector<InputEdge>& edges,

@@ -22,6 +22,7 @@ void Workspace::recycleAll() {
   recycle(pieces);
   recycle(exactRights);
   recycle(starts);
+  recycle(sortedStarts);
   recycle(queue);
   recycle(eventPoints);
   recycle(freeEventPoints);
@@ -64,6 +65,7 @@ void Workspace::release() {
   std::vector<SweepPiece>().swap(pieces);
   std::vector<XPoint>().swap(exactRights);
   std::vector<SweepStart>().swap(starts);
+  std::vector<SweepStart>().swap(sortedStarts);
   std::vector<SweepEvent>().swap(queue);
   std::vector<ExactCoords>().swap(eventPoints);
   std::vector<int>().swap(freeEventPoints);

@@ -213,7 +213,7 @@ struct SweepPiece {
 /// An input edge end on the grid, sorted once before the sweep. The point is stored as a sort
 /// key relative to the sweep's corner (min x, min y of the grid ends): (x - minX) << 32 |
 /// (y - minY). Grid units are at most 2^30 in magnitude (Grid::kMaxUnits), so each difference is
-/// below 2^31 and the key's order is the points' lexicographic order (spreadsort sorts it).
+/// below 2^31 and the key's order is the points' lexicographic order (sortByKey() sorts it).
 struct SweepStart {
   std::uint64_t key;
   int piece;
@@ -235,9 +235,10 @@ struct StartFrame {
   }
 };
 
-/// Sort start events by their keys (lexicographic point order); the order of equal keys is
-/// unspecified, as the sweep takes every start at a point together.
-void sortStarts(std::vector<SweepStart>& starts);
+/// Sort start events by their keys (lexicographic point order; sortByKey(), radix_sort.hpp, with
+/// `scratch` as its second array); the order of equal keys is unspecified, as the sweep takes
+/// every start at a point together.
+void sortStarts(std::vector<SweepStart>& starts, std::vector<SweepStart>& scratch);
 
 /// The exact coordinates of an XPoint without its cached doubles (an event keeps those).
 struct ExactCoords {
@@ -314,9 +315,9 @@ struct Workspace {
   std::array<Rings, kOperands> operandRings;
   // Sweep (split_edges.cpp).
   std::vector<SweepPiece> pieces;
-  std::vector<XPoint> exactRights;  ///< the right ends of the pieces of exact edges
-  std::vector<SweepStart> starts;
-  std::vector<SweepEvent> queue;         ///< a binary heap, earliest point first
+  std::vector<XPoint> exactRights;               ///< the right ends of the pieces of exact edges
+  std::vector<SweepStart> starts, sortedStarts;  ///< sortedStarts: the sort's second array
+  std::vector<SweepEvent> queue;                 ///< a binary heap, earliest point first
   std::vector<ExactCoords> eventPoints;  ///< exact points of queued events (slots are reused)
   std::vector<int> freeEventPoints;      ///< free slots of eventPoints
   /// Status node pool, as many as the status was ever wide (a deque: nodes never move).

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // The sweep's start events (src/core/workspace.hpp): the 64-bit key keeps the points'
-// lexicographic order over the whole grid range, and sortStarts() (spreadsort) sorts like
+// lexicographic order over the whole grid range, and sortStarts() (a radix sort) sorts like
 // std::sort on random, duplicate-heavy, sorted and reversed keys.
 #include <gtest/gtest.h>
 
@@ -46,7 +46,8 @@ void expectSortedLikeStd(std::vector<SweepStart> starts) {
   std::vector<SweepStart> want = starts;
   const auto byKey = [](const SweepStart& a, const SweepStart& b) { return a.key < b.key; };
   std::sort(want.begin(), want.end(), byKey);
-  sortStarts(starts);
+  std::vector<SweepStart> scratch;
+  sortStarts(starts, scratch);
   ASSERT_EQ(starts.size(), want.size());
   for (std::size_t i = 0; i < starts.size(); ++i) ASSERT_EQ(starts[i].key, want[i].key) << i;
   const auto full = [](const SweepStart& a, const SweepStart& b) {
@@ -62,7 +63,7 @@ void expectSortedLikeStd(std::vector<SweepStart> starts) {
 
 TEST(SweepStarts, SortMatchesStdSort) {
   std::mt19937_64 rng(1302);
-  for (const std::size_t n : {0, 1, 2, 17, 1000, 100000}) {
+  for (const std::size_t n : {0, 1, 2, 17, 63, 64, 1000, 2047, 2048, 100000}) {
     SCOPED_TRACE(n);
     expectSortedLikeStd(randomStarts(rng, n, 2 * std::uint64_t(kMax)));  // whole grid
     expectSortedLikeStd(randomStarts(rng, n, 3));                        // duplicate-heavy
