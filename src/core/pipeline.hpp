@@ -22,7 +22,6 @@ struct Workspace;       // workspace.hpp: every array kept between calls
 struct TraceScratch;    // workspace.hpp: the working arrays of traceContours()
 struct NestingScratch;  // workspace.hpp: the working arrays of buildNesting()
 struct ChainScratch;    // workspace.hpp: the working arrays of ringIsSimple()
-struct ChainEvent;      // workspace.hpp: a vertex as ringIsSimple() visits it
 struct WeilerScratch;   // workspace.hpp: the working arrays of intersectSimpleConvex()
 class OutputFrame;      // output.hpp: exact points to doubles
 
@@ -282,9 +281,6 @@ inline LowestVertex lowestVertex(const std::vector<IPoint>& ring) {
 /// `turnsChecked`: the caller has asked turnsOnce() already.
 bool ringIsSimple(const std::vector<IPoint>& ring, ChainScratch& scratch,
                   bool turnsChecked = false);
-/// The simple-ring test's vertex order: `events` sorted by key (equal keys in any order), with
-/// `scratch` as the radix sort's second array. Linear from 1,024 events.
-void sortChainEvents(std::vector<ChainEvent>& events, std::vector<ChainEvent>& scratch);
 /// Whether the ring's edge direction turns exactly once round (rotation index +-1) without a
 /// spike: true for every simple ring (Hopf), false for most that cross themselves (a figure
 /// eight turns 0 times, a ring with a loop twice). O(n), a cross product per vertex: asked

@@ -13,8 +13,9 @@
 // crossing is, since the test stops at the first contact). Every time two current edges become
 // neighbours in the status they are tested, so the lexicographically first contact of two edges
 // is found by the time the sweep reaches it (Shamos and Hoey). For n vertices in c chains: the
-// sort (linear, a radix sort, from 1,024 vertices), O(log c) per chain start, O(1) per inner
-// vertex; no arithmetic beyond exact int64 orientation (every point is a grid point).
+// sort (linear, a radix sort, from 64 vertices), O(log c) per chain start (O(1) when it starts
+// next to the last one started), O(1) per inner vertex; no arithmetic beyond exact int64
+// orientation (every point is a grid point).
 //
 // Simple here means: the ring's vertices are distinct, consecutive edges meet only at their
 // shared vertex and are not collinear (snapRings() leaves no straight-on vertex, and a spike is
@@ -170,7 +171,7 @@ class ChainSweep {
       below_->assign(count_, kNotReached);
       s_.reached.clear();
     }
-    sortChainEvents(events, s_.sorted);  // the sweep visits the vertices in this order
+    sortByKey(events, s_.sorted);  // the sweep visits the vertices in this order
     return true;
   }
 
@@ -295,10 +296,6 @@ class ChainSweep {
 };
 
 }  // namespace
-
-void sortChainEvents(std::vector<ChainEvent>& events, std::vector<ChainEvent>& scratch) {
-  sortByKey(events, scratch);
-}
 
 bool turnsOnce(const std::vector<IPoint>& ring) {
   const std::size_t n = ring.size();

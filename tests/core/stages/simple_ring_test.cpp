@@ -15,6 +15,7 @@
 
 #include "limit_shapes.hpp"
 #include "pipeline.hpp"
+#include "radix_sort.hpp"
 #include "stage_support.hpp"
 #include "support/same_set.hpp"
 #include "workspace.hpp"
@@ -185,10 +186,10 @@ TEST(StageSimpleRing, ALongContourWithASingleCrossing) {
                          stages::generalSimplify({toPath(ring)}, FillRule::NonZero), "bow tie");
 }
 
-// The sweep's vertex order (sortChainEvents()) against std::sort: sizes across the comparison
-// sort, the radix sort and its split by x's top bits (from 2^20), keys spanning 1 to 32 bits in
-// each coordinate from random offsets, some with zero low bits (a fitted grid's units) and few
-// distinct values (many equal keys).
+// The sweep's vertex order (sortByKey(), radix_sort.hpp) against std::sort: sizes across the
+// comparison sort, the radix sort and its split by x's top bits (from 2^20), keys spanning 1 to 32
+// bits in each coordinate from random offsets, some with zero low bits (a fitted grid's units) and
+// few distinct values (many equal keys).
 TEST(StageSimpleRing, TheVertexOrderIsSortedAtEverySizeAndSpan) {
   std::mt19937_64 rng(20261203);
   const detail::StartFrame frame;
@@ -218,7 +219,7 @@ TEST(StageSimpleRing, TheVertexOrderIsSortedAtEverySizeAndSpan) {
       for (const detail::ChainEvent& e : events) expected.push_back(e.key);
       std::sort(expected.begin(), expected.end());
       std::vector<detail::ChainEvent> scratch;
-      detail::sortChainEvents(events, scratch);
+      detail::sortByKey(events, scratch);
       ASSERT_EQ(events.size(), n);
       bool same = true;
       std::vector<char> seen(n, 0);
