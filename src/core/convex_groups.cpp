@@ -78,14 +78,15 @@ Place placeOf(const std::vector<IPoint>& ring, const RingBox& box, const SideLin
     return Place::Inside;
   }
   if (boxRight != 0) return Place::Apart;
-  unsigned anyLeft = 0, allLeft = all, allClosed = all;
+  unsigned anyLeft = 0, allLeft = all, anyOut = 0;
   bool vertexInC = false, edgeMeets = false;
   // The sides each vertex lies strictly right of; an edge between two vertices outside C meets
-  // it only if no one side has both ends right of it (tested as the vertices come).
+  // it only if no one side has both ends right of it (tested as the vertices come, until a
+  // vertex in C or a meeting edge has decided).
   unsigned firstOut = 0, lastOut = 0;
   IPoint last{};
   const auto edge = [&](IPoint p, unsigned outP, IPoint q, unsigned outQ) {
-    if (!edgeMeets && outP != 0 && outQ != 0 && (outP & outQ) == 0) {
+    if (!edgeMeets && !vertexInC && outP != 0 && outQ != 0 && (outP & outQ) == 0) {
       edgeMeets = segmentMeetsConvex(p, q, outP, outQ, c);
     }
   };
@@ -94,8 +95,8 @@ Place placeOf(const std::vector<IPoint>& ring, const RingBox& box, const SideLin
     const auto [left, zeros] = sides.classify<kSides>(p);
     anyLeft |= left;
     allLeft &= left;
-    allClosed &= left | zeros;
     const unsigned out = all & ~(left | zeros);
+    anyOut |= out;
     vertexInC = vertexInC || out == 0;
     if (k == 0) {
       firstOut = out;
@@ -106,7 +107,7 @@ Place placeOf(const std::vector<IPoint>& ring, const RingBox& box, const SideLin
     lastOut = out;
   }
   edge(last, lastOut, ring[0], firstOut);
-  inClosed = allClosed == all;
+  inClosed = anyOut == 0;
   // In the closed outer half-plane of one side: at most on C's boundary, around no point of C.
   if (anyLeft != all) return Place::Apart;
   if (allLeft == all) return Place::Inside;

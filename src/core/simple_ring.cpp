@@ -21,8 +21,6 @@
 // shared vertex and are not collinear (snapRings() leaves no straight-on vertex, and a spike is
 // a collinear overlap), and no other two edges meet at all.
 #include <algorithm>
-#include <array>
-#include <cstdint>
 #include <utility>
 
 #include <roiclip/error.hpp>

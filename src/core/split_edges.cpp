@@ -119,7 +119,7 @@ class Sweep {
         push(e.right, -1);
       }
     }
-    sortStarts(starts_, ws.sortedStarts);
+    sortByKey(starts_, ws.sortedStarts);
     out_ = std::move(ws.arrangement);  // the kept capacity (resolve() gives it back)
     out_.vertices.clear();
     out_.pieces.clear();
@@ -577,10 +577,6 @@ class Sweep {
 };
 
 }  // namespace
-
-void sortStarts(std::vector<SweepStart>& starts, std::vector<SweepStart>& scratch) {
-  sortByKey(starts, scratch);
-}
 
 Arrangement splitEdges(const std::vector<InputEdge>& edges,
                        const std::vector<ExactEdge>& exactEdges, const BooleanSpec& spec,

@@ -213,7 +213,8 @@ struct SweepPiece {
 /// An input edge end on the grid, sorted once before the sweep. The point is stored as a sort
 /// key relative to the sweep's corner (min x, min y of the grid ends): (x - minX) << 32 |
 /// (y - minY). Grid units are at most 2^30 in magnitude (Grid::kMaxUnits), so each difference is
-/// below 2^31 and the key's order is the points' lexicographic order (sortByKey() sorts it).
+/// below 2^31 and the key's order is the points' lexicographic order (sortByKey() sorts it; the
+/// order of equal keys is unspecified, as the sweep takes every start at a point together).
 struct SweepStart {
   std::uint64_t key;
   int piece;
@@ -234,11 +235,6 @@ struct StartFrame {
     return {minX + std::int64_t(key >> 32), minY + std::int64_t(key & 0xffffffffU)};
   }
 };
-
-/// Sort start events by their keys (lexicographic point order; sortByKey(), radix_sort.hpp, with
-/// `scratch` as its second array); the order of equal keys is unspecified, as the sweep takes
-/// every start at a point together.
-void sortStarts(std::vector<SweepStart>& starts, std::vector<SweepStart>& scratch);
 
 /// The exact coordinates of an XPoint without its cached doubles (an event keeps those).
 struct ExactCoords {

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // The sweep's start events (src/core/workspace.hpp): the 64-bit key keeps the points'
-// lexicographic order over the whole grid range, and sortStarts() (a radix sort) sorts like
+// lexicographic order over the whole grid range, and sortByKey() (radix_sort.hpp) sorts like
 // std::sort on random, duplicate-heavy, sorted and reversed keys.
 #include <gtest/gtest.h>
 
@@ -10,6 +10,7 @@
 #include <tuple>
 #include <vector>
 
+#include "radix_sort.hpp"
 #include "workspace.hpp"
 
 namespace roiclip::detail {
@@ -47,7 +48,7 @@ void expectSortedLikeStd(std::vector<SweepStart> starts) {
   const auto byKey = [](const SweepStart& a, const SweepStart& b) { return a.key < b.key; };
   std::sort(want.begin(), want.end(), byKey);
   std::vector<SweepStart> scratch;
-  sortStarts(starts, scratch);
+  sortByKey(starts, scratch);
   ASSERT_EQ(starts.size(), want.size());
   for (std::size_t i = 0; i < starts.size(); ++i) ASSERT_EQ(starts[i].key, want[i].key) << i;
   const auto full = [](const SweepStart& a, const SweepStart& b) {
