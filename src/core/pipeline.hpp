@@ -282,9 +282,9 @@ inline LowestVertex lowestVertex(const std::vector<IPoint>& ring) {
 bool ringIsSimple(const std::vector<IPoint>& ring, ChainScratch& scratch,
                   bool turnsChecked = false);
 /// Whether the ring's edge direction turns exactly once round (rotation index +-1) without a
-/// spike: true for every simple ring (Hopf), false for most that cross themselves (a figure
-/// eight turns 0 times, a ring with a loop twice). O(n), a cross product per vertex: asked
-/// first by ringIsSimple().
+/// spike or a straight-on vertex: true for every simple ring (Hopf), false for most that cross
+/// themselves (a figure eight turns 0 times, a ring with a loop twice). O(n), a cross product per
+/// vertex: asked first by ringIsSimple().
 bool turnsOnce(const std::vector<IPoint>& ring);
 /// The region a simple ring fills under `rule` (it winds +1 or -1 around its inside), exactly as
 /// stages 1 to 4 emit it: none, or one polygon, its vertices the ring's, in roiclip's output

@@ -5,21 +5,22 @@
 // finds nothing to split, yet it costs a tree step, a heap step and a piece per vertex. This
 // stage asks first, with a Shamos-Hoey sweep over the ring's monotone chains: a ring splits at its
 // lexicographic turning vertices into chains whose vertices increase lexicographically (x, then
-// y). A chain enters the status once, at its first vertex, and leaves once, at its last; along it
-// the sweep only moves to the next edge, which is tested against the chains next to it (no tree
-// step). The sweep visits the vertices in one order sorted up front (a radix sort of their keys,
-// each tagged with what happens there): a chain's vertices increase along it, so each is reached
-// after the ones before it on its chain, and only the ring's input events are ever visited (no
-// crossing is, since the test stops at the first contact). Every time two current edges become
-// neighbours in the status they are tested, so the lexicographically first contact of two edges
-// is found by the time the sweep reaches it (Shamos and Hoey). For n vertices in c chains: the
-// sort (linear, a radix sort, from 64 vertices), O(log c) per chain start (O(1) when it starts
-// next to the last one started), O(1) per inner vertex; no arithmetic beyond exact int64
-// orientation (every point is a grid point).
+// y). The sweep visits only the turning vertices, sorted up front (a radix sort of their keys):
+// at each, two chains enter or leave the status. Two chains next to each other in the status are
+// tested edge against edge by walking both, lazily: when they stop being neighbours (a pair
+// starts between them, or one of them ends), every pair of their edges whose spans overlap up
+// to that point is tested, and each chain keeps how far it has been tested against the chain
+// below and the one above. Before the lexicographically first contact of two edges the status is
+// in order, the two chains that meet there are neighbours just before it (Shamos and Hoey), and
+// their walk reaches it when they stop being neighbours, at or after it. For n vertices in c
+// chains: the sort of the c turning vertices (linear, a radix sort, from 64), O(log c) per
+// chain start (O(1) when it starts next to the last one started), and two edge tests per edge
+// (one with each neighbouring chain); no arithmetic beyond exact int64 orientation (every point
+// is a grid point). The test stops at the first contact it finds.
 //
 // Simple here means: the ring's vertices are distinct, consecutive edges meet only at their
-// shared vertex and are not collinear (snapRings() leaves no straight-on vertex, and a spike is
-// a collinear overlap), and no other two edges meet at all.
+// shared vertex and are not collinear (a straight-on vertex or a spike, which turnsOnce(), asked
+// first, rejects), and no other two edges meet at all.
 #include <algorithm>
 #include <utility>
 
@@ -49,13 +50,26 @@ bool segmentsMeet(IPoint a, IPoint b, IPoint c, IPoint d) {
   return true;
 }
 
-// A chain's current edge passes below point q (q lies strictly to its left).
+// The edge of a chain where the status's search meets point q: its cursor `at` moves on to the
+// first edge that does not end before q. The chain is in the status at q, so it starts before q
+// and ends after it (a chain ending at q would be a second ring vertex on q, rejected before).
+inline ChainCursor edgeAt(const ChainNode& c, const IPoint& q) {
+  while (c.at.left > 0 && c.end(c.at) < q) {
+    c.at.i = c.after(c.at.i);
+    --c.at.left;
+  }
+  return c.at;
+}
+
+// A chain's edge at point q passes below q (q lies strictly to its left).
 struct EdgeBelowPoint {
   bool operator()(const ChainNode& c, const IPoint& q) const {
-    return orientInGrid(c.a, c.b, q) > 0;
+    const ChainCursor e = edgeAt(c, q);
+    return orientInGrid(c.start(e), c.end(e), q) > 0;
   }
   bool operator()(const IPoint& q, const ChainNode& c) const {
-    return orientInGrid(c.a, c.b, q) < 0;
+    const ChainCursor e = edgeAt(c, q);
+    return orientInGrid(c.start(e), c.end(e), q) < 0;
   }
 };
 
@@ -75,12 +89,11 @@ class ChainSweep {
     const std::vector<ChainEvent>& events = s_.events;
     for (std::size_t e = 0; e < events.size(); ++e) {
       const ChainEvent& x = events[e];
-      if (e > 0 && events[e - 1].key == x.key) return false;  // two ring vertices at one point
-      if (x.pair < 0) {
-        if (!advance(x.chain)) return false;
-      } else if (s_.chains[std::size_t(x.chain)].ib < 0) {
-        if (!insertPair(x.chain, x.pair)) return false;
-      } else if (!removePair(x.chain, x.pair)) {
+      if (e > 0 && events[e - 1].key == x.key) return false;  // two turning vertices at one point
+      const IPoint p = frame_.point(x.key);
+      if (!s_.chains[std::size_t(x.chain)].started()) {
+        if (!insertPair(x.chain, x.pair, p)) return false;
+      } else if (!removePair(x.chain, x.pair, p)) {
         return false;
       }
     }
@@ -94,9 +107,6 @@ class ChainSweep {
                             boost::intrusive::compare<ChainNode::NeverCompared>,
                             boost::intrusive::constant_time_size<false>>;
 
-  [[nodiscard]] IPoint vertex(int ring, int i) const {
-    return rings_[std::size_t(ring)][std::size_t(i)];
-  }
   // Index after i in a ring of n vertices, going `step` (+1 or -1).
   static int after(int n, int i, int step) {
     i += step;
@@ -104,19 +114,19 @@ class ChainSweep {
   }
 
   // The ring's maximal runs of lexicographically increasing or decreasing edges, each as a
-  // chain from its smallest vertex, and every vertex's event in lexicographic order: the chains
-  // of a ring are made in ring order, so chain k and the next one meet at chain k's last vertex
-  // in ring order, a turning vertex where both start (chain k runs down the ring) or both end.
+  // chain from its smallest vertex, and the events of the turning vertices in lexicographic
+  // order: the chains of a ring are made in ring order, so chain k and the next one meet at
+  // chain k's last vertex in ring order, a turning vertex where both start (chain k runs down
+  // the ring) or both end.
   bool splitChains() {
     std::vector<ChainNode>& chains = s_.chains;
     std::vector<ChainEvent>& events = s_.events;
     chains.clear();
     events.clear();
     // Sized up front. A large ring's chains are counted first: a comb of 10M vertices has 5M
-    // chains (560 MB), which growing the array would copy and fault in again (1.3 s of 3.8 s).
+    // chains, which growing the array would copy and fault in again (1.3 s of 3.8 s).
     std::size_t vertices = 0;
     for (std::size_t r = 0; r < count_; ++r) vertices += rings_[r].size();
-    events.reserve(vertices);
     if (vertices >= kCountChainsFrom) {
       std::size_t turns = 0;
       for (std::size_t r = 0; r < count_; ++r) {
@@ -127,6 +137,7 @@ class ChainSweep {
         }
       }
       chains.reserve(turns);
+      events.reserve(turns);
     }
     for (int r = 0; r < int(count_); ++r) {
       const IPoint* const points = rings_[std::size_t(r)].data();
@@ -149,62 +160,85 @@ class ChainSweep {
         const bool u = up(i);
         const int k = int(chains.size());
         int j = after(n, i, 1), edges = 1;
-        for (++done; done < n && up(j) == u; ++done, ++edges) {
-          events.push_back({frame_.key(points[j]), k, -1});  // an inner vertex of chain k
-          j = after(n, j, 1);
-        }
+        for (++done; done < n && up(j) == u; ++done, ++edges) j = after(n, j, 1);
+        const bool last = done >= n;
         ChainNode& chain = chains.emplace_back();
         chain.ring = r;
         chain.points = points;
         chain.size = n;
         chain.step = u ? +1 : -1;
-        chain.ia = u ? i : j;
-        chain.remaining = edges;
+        chain.first = u ? i : j;
+        chain.edges = edges;
+        // Ring order: the previous chain shares vertex i, the next one vertex j.
+        const int previous = k == first ? -1 : k - 1, next = last ? first : k + 1;
+        (u ? chain.startPartner : chain.endPartner) = previous;
+        (u ? chain.endPartner : chain.startPartner) = next;
         // The turning vertex j, shared with the next chain (the ring's first one after its last).
-        events.push_back({frame_.key(points[j]), k, done < n ? k + 1 : first});
+        events.push_back({frame_.key(points[j]), k, next});
         i = j;
       }
+      // The ring's first chain shares its vertex `begin` with the last one.
+      ChainNode& head = chains[std::size_t(first)];
+      (head.step > 0 ? head.startPartner : head.endPartner) = int(chains.size()) - 1;
     }
     if (below_ != nullptr) {
       below_->assign(count_, kNotReached);
       s_.reached.clear();
     }
-    sortByKey(events, s_.sorted);  // the sweep visits the vertices in this order
+    sortByKey(events, s_.sorted);  // the sweep visits the turning vertices in this order
     return true;
   }
 
-  // Makes the chain's next edge current (the chain must have one).
-  static void stepChain(ChainNode& chain) {
-    chain.ib = after(chain.size, chain.ia, chain.step);
-    chain.a = chain.points[chain.ia];
-    chain.b = chain.points[chain.ib];
-    --chain.remaining;
+  // Chains lo and hi (hi just above lo) have been neighbours in the status since their cursors'
+  // edges: test every pair of their edges whose spans (lexicographic, from start to end) overlap,
+  // up to the pairs that begin at point t, moving the cursors on. Every point two segments share
+  // lies in both spans, so each contact up to t between the two chains is found. False at a
+  // contact.
+  //
+  // Two edges of different chains may not meet, with one exception: the first edges of two
+  // chains that start at one turning vertex are consecutive ring edges, and so are the last
+  // edges of two that end at one. They share that vertex, and turnsOnce() has ruled out their
+  // overlapping along it (collinear consecutive edges).
+  bool walk(ChainNode& lo, ChainNode& hi, const IPoint& t) const {
+    const int hiIndex = int(&hi - s_.chains.data());
+    ChainCursor& e = lo.up;
+    ChainCursor& f = hi.down;
+    IPoint a = lo.start(e), b = lo.end(e), c = hi.start(f), d = hi.end(f);
+    bool sharedStart =
+        e.left == lo.edges - 1 && f.left == hi.edges - 1 && lo.startPartner == hiIndex;
+    for (;;) {
+      // Edges ending at one point: the last edges of two chains that end at one vertex, or a
+      // contact.
+      if (b == d) return e.left == 0 && f.left == 0 && lo.endPartner == hiIndex;
+      if (!sharedStart && segmentsMeet(a, b, c, d)) return false;
+      sharedStart = false;
+      if (b < d) {
+        if (t < b || e.left == 0) return true;
+        e.i = lo.after(e.i);
+        --e.left;
+        a = b;
+        b = lo.end(e);
+      } else {
+        if (t < d || f.left == 0) return true;
+        f.i = hi.after(f.i);
+        --f.left;
+        c = d;
+        d = hi.end(f);
+      }
+    }
   }
 
-  // Whether the current edges of two chains meet where a simple ring allows no contact.
-  [[nodiscard]] bool conflict(const ChainNode* p, const ChainNode* q) const {
-    if (p == nullptr || q == nullptr) return false;
-    // Consecutive ring edges that are current together are the first or last edges of two
-    // chains at their turning vertex: both start there (equal `a`) or both end there (equal
-    // `b`). They may not overlap along it. Two edges with an equal end that are not consecutive
-    // meet at two vertices on one point, which the sweep rejects when it reaches that point, so
-    // the test by points (no index arithmetic) decides the same rings.
-    if (p->a == q->a) return orientInGrid(p->a, p->b, q->b) == 0;
-    if (p->b == q->b) return orientInGrid(p->b, p->a, q->a) == 0;
-    return segmentsMeet(p->a, p->b, q->a, q->b);
-  }
-
-  // Two chains start at their shared (turning) vertex.
-  bool insertPair(int i, int j) {
+  // Two chains start at their shared (turning) vertex p.
+  bool insertPair(int i, int j, const IPoint& p) {
     ChainNode* lo = &s_.chains[std::size_t(i)];
     ChainNode* hi = &s_.chains[std::size_t(j)];
-    const IPoint p = vertex(lo->ring, lo->ia);
-    stepChain(*lo);
-    stepChain(*hi);
-    const int turn = orientInGrid(p, lo->b, hi->b);
+    for (ChainNode* c : {lo, hi}) {
+      c->down = c->up = c->at = ChainCursor{c->first, c->edges - 1};
+    }
+    const int turn = orientInGrid(p, lo->end(lo->at), hi->end(hi->at));
     if (turn == 0) return false;  // overlapping first edges
     if (turn < 0) std::swap(lo, hi);
-    // The first chain whose current edge does not pass below p.
+    // The first chain whose edge at p does not pass below p.
     ChainNode* above = nullptr;
     Status::iterator at;
     if (!nearFinger(p, above)) {
@@ -214,6 +248,8 @@ class ChainSweep {
       at = above != nullptr ? status_.iterator_to(*above) : status_.end();
     }
     ChainNode* below = above != nullptr ? above->below : top_;
+    // The two neighbours stop being neighbours at p.
+    if (below != nullptr && above != nullptr && !walk(*below, *above, p)) return false;
     status_.insert_before(at, *lo);
     status_.insert_before(at, *hi);
     finger_ = hi;
@@ -228,10 +264,10 @@ class ChainSweep {
       (*below_)[std::size_t(lo->ring)] = below != nullptr ? int(below - s_.chains.data()) : -1;
       s_.reached.push_back(lo->ring);
     }
-    return !conflict(below, lo) && !conflict(hi, above);
+    return true;
   }
 
-  // The first chain whose current edge does not pass below p (null: none), when it lies within
+  // The first chain whose edge at p does not pass below p (null: none), when it lies within
   // a few steps of the last pair inserted (finger_) along the status: chains often start in
   // order up a side (a comb's teeth start up one line), and then the tree's search, a cache miss
   // a level on a large status, is not needed. False when it lies further.
@@ -255,30 +291,24 @@ class ChainSweep {
     return true;
   }
 
-  // The chain's current edge ends at an inner vertex of the chain: its next edge becomes current.
-  bool advance(int i) {
-    ChainNode& chain = s_.chains[std::size_t(i)];
-    const IPoint before = chain.a;
-    chain.ia = chain.ib;
-    stepChain(chain);
-    if (orientInGrid(before, chain.a, chain.b) == 0) return false;  // a straight-on vertex
-    return !conflict(chain.below, &chain) && !conflict(&chain, chain.above);
-  }
-
-  // Two chains end at their shared (turning) vertex: they leave the status, next to each other.
-  bool removePair(int i, int j) {
+  // Two chains end at their shared (turning) vertex p: they leave the status, next to each
+  // other, once the edges of each neighbouring pair are tested up to p.
+  bool removePair(int i, int j, const IPoint& p) {
     ChainNode* lo = &s_.chains[std::size_t(i)];
     ChainNode* hi = &s_.chains[std::size_t(j)];
     if (lo->above != hi) std::swap(lo, hi);
     if (lo->above != hi) return false;  // something passes between them into their end
     ChainNode* below = lo->below;
     ChainNode* above = hi->above;
+    if (below != nullptr && !walk(*below, *lo, p)) return false;
+    if (!walk(*lo, *hi, p)) return false;
+    if (above != nullptr && !walk(*hi, *above, p)) return false;
     if (below != nullptr) below->above = above;
     (above != nullptr ? above->below : top_) = below;
     status_.erase(status_.iterator_to(*lo));
     status_.erase(status_.iterator_to(*hi));
     if (finger_ == lo || finger_ == hi) finger_ = below != nullptr ? below : above;
-    return !conflict(below, above);
+    return true;
   }
 
   static constexpr int kNotReached = -2;
@@ -301,7 +331,9 @@ bool turnsOnce(const std::vector<IPoint>& ring) {
   // Counts the edge direction passing angle 0 (the positive x axis): counter-clockwise when it
   // moves from the lower half-turn [pi, 2 pi) to the upper one [0, pi) turning left, clockwise
   // when it moves from the upper to the lower turning right. Each turn is less than a half turn
-  // in magnitude, so it passes 0 at most once; a spike (a half turn) is not simple anyway.
+  // in magnitude, so it passes 0 at most once. Collinear consecutive edges, a spike (a half turn)
+  // or a straight-on vertex (none), are not simple (ringIsSimple()): the chain sweep relies on
+  // this test for them.
   const auto direction = [&](std::size_t i) {
     const IPoint a = ring[i], b = ring[i + 1 == n ? 0 : i + 1];
     return IPoint{b.x - a.x, b.y - a.y};
@@ -313,7 +345,7 @@ bool turnsOnce(const std::vector<IPoint>& ring) {
     const IPoint e = direction(i);
     // The sign of d x e, exact for grid points (|differences| <= 2^31: products below 2^62).
     const std::int64_t l = d.x * e.y, r = d.y * e.x;
-    if (l == r && d.x * e.x < -(d.y * e.y)) return false;  // a spike (no sum: it could overflow)
+    if (l == r) return false;  // a spike or a straight-on vertex: not simple (see ringIsSimple())
     const bool fromLower = lower(d), toLower = lower(e);
     turns += (fromLower && !toLower && l > r) ? 1 : 0;
     turns -= (!fromLower && toLower && l < r) ? 1 : 0;

@@ -63,20 +63,38 @@ struct StatusNode {
   StatusNode* above = nullptr;  ///< the node next above it, null at the top
 };
 
-/// A monotone chain of a ring in the simple-ring test (simple_ring.cpp): its current edge a-b
-/// (ring indices ia, ib; a < b lexicographically; ib is -1 until the chain starts) and its
-/// status links.
+/// One edge of a monotone chain, as a place along it: the edge from ring index `i` on, with `left`
+/// edges of the chain after it.
+struct ChainCursor {
+  int i = 0;
+  int left = -1;
+};
+/// A monotone chain of a ring in the simple-ring test (simple_ring.cpp): its edges run from ring
+/// index `first` (its smallest vertex) `edges` steps in direction `step`, lexicographically
+/// increasing; its status links; and three places along it, each only moving on: `down` and `up`,
+/// how far its edges have been tested against the chain below and the one above it, and `at`, the
+/// edge where the status's search last located a point against it.
 struct ChainNode {
   StatusHook hook;
   ChainNode* below = nullptr;
   ChainNode* above = nullptr;
-  IPoint a, b;
-  int ia = 0, ib = -1;
   const IPoint* points = nullptr;  ///< its ring's vertices (the sweep's hot path reads them here)
   int size = 0;                    ///< and their number
   int ring = 0;                    ///< which ring of the set
   int step = 0;                    ///< +1 when the chain runs forward through the ring, -1 backward
-  int remaining = 0;               ///< edges after the current one
+  int first = 0;                   ///< ring index of its first (smallest) vertex
+  int edges = 0;
+  /// The chains it shares its first and its last vertex with (turning vertices of the ring).
+  int startPartner = -1, endPartner = -1;
+  ChainCursor down, up;
+  mutable ChainCursor at;  ///< moved on by the status's search (a const comparison)
+  [[nodiscard]] bool started() const { return up.left >= 0; }
+  [[nodiscard]] int after(int i) const {
+    i += step;
+    return i == size ? 0 : i < 0 ? size - 1 : i;
+  }
+  [[nodiscard]] IPoint start(ChainCursor c) const { return points[c.i]; }
+  [[nodiscard]] IPoint end(ChainCursor c) const { return points[after(c.i)]; }
   /// The status is built by position (insert_before), never by comparing two nodes: the
   /// comparison the tree's type asks for.
   struct NeverCompared {
@@ -85,9 +103,8 @@ struct ChainNode {
     }
   };
 };
-/// A ring vertex as the simple-ring test visits it: its StartFrame key and what happens there.
-/// An inner vertex of a chain (`pair` -1) moves `chain` on to its next edge; a turning vertex
-/// starts or ends the two chains `chain` and `pair` that meet there.
+/// A turning vertex of a ring as the simple-ring test visits it: its StartFrame key and the two
+/// chains `chain` and `pair` that start or end there.
 struct ChainEvent {
   std::uint64_t key;
   int chain;
@@ -112,8 +129,8 @@ struct RingNesting {
   int hole = -1;         ///< its index among its outer ring's holes (holes)
 };
 
-/// The working arrays of ringIsSimple() / ringsAreSimple(): the chains and every vertex's event
-/// in lexicographic order; for a set of rings, the chain below each ring's
+/// The working arrays of ringIsSimple() / ringsAreSimple(): the chains and the turning vertices'
+/// events in lexicographic order; for a set of rings, the chain below each ring's
 /// smallest vertex (-1: none) and the rings in the order the sweep reached them, then
 /// simpleRingsRegion()'s per-ring results.
 struct ChainScratch {
