@@ -311,6 +311,10 @@ TEST(StageSimpleRing, RotationIndexRejectsMostSelfCrossingRings) {
   EXPECT_FALSE(detail::turnsOnce({{0, 0}, {10, 0}, {5, 0}, {5, 5}}));  // a spike
   // The pentagram: turns twice.
   EXPECT_FALSE(detail::turnsOnce({{0, 10}, {6, -8}, {-10, 3}, {10, 3}, {-6, -8}}));
+  // A straight-on vertex is not simple (snapRings() leaves none): turnsOnce() rejects it, and the
+  // chain sweep relies on that.
+  EXPECT_FALSE(detail::turnsOnce({{0, 0}, {2, 0}, {4, 0}, {4, 4}, {0, 4}}));
+  EXPECT_FALSE(detail::turnsOnce({{0, 0}, {4, 0}, {4, 2}, {4, 4}, {0, 4}}));
   // Touching itself at a vertex keeps the rotation index 1: only the chain sweep sees it.
   const Ring pinched = {{0, -2}, {4, 0}, {8, -2}, {8, 2}, {4, 0}, {0, 2}};
   EXPECT_TRUE(detail::turnsOnce(pinched));
@@ -409,8 +413,8 @@ TEST(StageSimpleRing, AgreesWithBruteForceOnSmallDegenerateRings) {
 
 // Sets of two or three small random rings on a 6 x 6 grid: ringsAreSimple() against the
 // definition (each ring simple, no two rings meet). Rings sharing a vertex, one ring's vertex on
-// another's edge and overlapping edges are common; the sweep visits every vertex once in one
-// sorted order, and two vertices at one point (of one ring or of two) end it.
+// another's edge and overlapping edges are common: the sweep tests the chains of all rings as
+// one ring's.
 TEST(StageSimpleRing, SetsAgreeWithBruteForceOnSmallDegenerateRings) {
   std::mt19937 rng(20261203);
   detail::ChainScratch scratch;
@@ -448,6 +452,39 @@ TEST(StageSimpleRing, SetsAgreeWithBruteForceOnSmallDegenerateRings) {
 
 // Star-shaped rings (sorted random angles, random radii, rounded): mostly simple, sometimes a
 // rounding makes edges touch. Verdict against brute force, region against the general path.
+// Longer rings with many chains on a small grid (star-shaped, radius 5 to 9, up to 64 vertices,
+// snapped to integers): pixel-like staircases, vertices on other edges, repeated points and
+// edges running along each other, then a pinch or a swap far along the ring. Neighbouring
+// chains are tested lazily, when they stop being neighbours, so a contact must be found however
+// long two chains stay next to each other and wherever a pair starts or ends between them.
+TEST(StageSimpleRing, ContactsBetweenLongNeighbouringChainsAreFound) {
+  std::mt19937 rng(20261203);
+  int simple = 0, total = 0;
+  for (int trial = 0; trial < 6000; ++trial) {
+    const double radius = 5.0 + double(trial % 5);
+    const Path path = stages::starShapedRing(rng, 12 + int(rng() % 53), {0, 0}, radius, 0.5);
+    const detail::Rings rings = detail::snapRings({path}, 0, Grid::fixed(1));
+    if (rings.size() != 1 || rings[0].size() < 6) continue;
+    for (int variant = 0; variant < 3; ++variant) {
+      Ring r = rings[0];
+      const std::size_t n = r.size();
+      if (variant == 1) r[rng() % n] = r[rng() % n];  // often a pinch
+      if (variant == 2) std::swap(r[rng() % n], r[rng() % n]);
+      bool repeats = false;
+      for (std::size_t i = 0; i < n; ++i) repeats = repeats || r[i] == r[(i + 1) % n];
+      if (repeats) continue;
+      const bool expected = bruteForceSimple(r);
+      ASSERT_EQ(chainSweepSimple(r), expected) << "trial " << trial << " variant " << variant;
+      Ring reversed(r.rbegin(), r.rend());
+      ASSERT_EQ(chainSweepSimple(reversed), expected) << "trial " << trial << " reversed";
+      simple += expected ? 1 : 0;
+      ++total;
+    }
+  }
+  EXPECT_GT(simple, total / 10);  // both verdicts are exercised
+  EXPECT_LT(simple, total - total / 10);
+}
+
 TEST(StageSimpleRing, StarShapedRingsMatchTheGeneralPath) {
   std::mt19937 rng(7);
   int simple = 0;
