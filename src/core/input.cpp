@@ -4,6 +4,9 @@
 #include <optional>
 #include <string>
 #include <utility>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 #include <roiclip/error.hpp>
 #include <roiclip/roiclip.hpp>
@@ -34,12 +37,15 @@ inline std::int64_t snap(double v, const Grid& grid, double originCoordinate, Ax
   return *units;
 }
 
-// True when b lies on the way from a to c, going straight on (exact). Snapped points lie within
-// +-2^30 units (orientInGrid()): each product of differences is at most 2^62 in magnitude, so the
-// dot product's sign is decided by comparing its two terms in int64.
+// True when a path that moves by d and then by e goes straight on (exact). Snapped points lie
+// within +-2^30 units (orientInGrid()): each product of differences is at most 2^62 in magnitude,
+// so the cross product is compared and the dot product's sign decided in int64.
+inline bool straightOn(IPoint d, IPoint e) {
+  return d.x * e.y == d.y * e.x && d.x * e.x > -(d.y * e.y);
+}
+// b lies on the way from a to c.
 inline bool straightThrough(IPoint a, IPoint b, IPoint c) {
-  if (orientInGrid(a, b, c) != 0) return false;
-  return (b.x - a.x) * (c.x - b.x) > -((b.y - a.y) * (c.y - b.y));
+  return straightOn({b.x - a.x, b.y - a.y}, {c.x - b.x, c.y - b.y});
 }
 
 // The straight-on vertices across the closing vertex of a ring whose other straight runs are
@@ -90,15 +96,29 @@ struct FastSnap {
       : s(grid.scale), ox(grid.origin.x * grid.scale), oy(grid.origin.y * grid.scale) {
     if (!(std::fabs(ox) <= 0x1p50 && std::fabs(oy) <= 0x1p50)) s = NAN;
   }
+  static constexpr double kRound = 6755399441055744.0;  // 1.5 * 2^52, as detail::roundToUnits
+  static constexpr double kMax = double(Grid::kMaxUnits);
+#if defined(__SSE2__)
+  // Both coordinates in one SSE2 register: the same operations lane by lane.
   bool operator()(const Point& v, IPoint& q) const {
-    constexpr double kRound = 6755399441055744.0;  // 1.5 * 2^52, as detail::roundToUnits
-    constexpr double kMax = double(Grid::kMaxUnits);
+    static_assert(sizeof(Point) == 2 * sizeof(double), "x and y in a row");
+    const __m128d round = _mm_set1_pd(kRound);
+    const __m128d u = _mm_mul_pd(_mm_loadu_pd(&v.x), _mm_set1_pd(s));
+    const __m128d d = _mm_sub_pd(_mm_sub_pd(_mm_add_pd(u, round), round), _mm_set_pd(oy, ox));
+    const __m128d magnitude = _mm_andnot_pd(_mm_set1_pd(-0.0), d);
+    if (_mm_movemask_pd(_mm_cmple_pd(magnitude, _mm_set1_pd(kMax))) != 3) return false;
+    q = {_mm_cvttsd_si64(d), _mm_cvttsd_si64(_mm_unpackhi_pd(d, d))};
+    return true;
+  }
+#else
+  bool operator()(const Point& v, IPoint& q) const {
     const double ux = v.x * s, uy = v.y * s;
     const double dx = ((ux + kRound) - kRound) - ox, dy = ((uy + kRound) - kRound) - oy;
     if (!(std::fabs(dx) <= kMax && std::fabs(dy) <= kMax)) return false;
     q = {std::int64_t(dx), std::int64_t(dy)};
     return true;
   }
+#endif
 };
 
 // Snap one path: validated grid points with consecutive repeats removed; with `merge`, also
@@ -112,7 +132,8 @@ void snapPoints(const Path& path, std::size_t count, std::size_t pathIndex, Oper
   if (out.size() < count) out.resize(count);
   IPoint* const kept = out.data();
   std::size_t n = 0;
-  IPoint last{std::int64_t{1} << 62, 0};  // no snapped point
+  IPoint last{std::int64_t{1} << 62, 0};  // kept[n - 1], or no snapped point
+  IPoint along{0, 0};  // with kMerge and n >= 2: the direction from kept[n - 2] to kept[n - 1]
   for (std::size_t i = 0; i < count; ++i) {
     IPoint q;
     if (!fast(path[i], q)) {
@@ -120,9 +141,16 @@ void snapPoints(const Path& path, std::size_t count, std::size_t pathIndex, Oper
            snap(path[i].y, grid, grid.origin.y, Axis::Y, pathIndex, i, label)};
     }
     if (q == last) continue;
+    const IPoint step{q.x - last.x, q.y - last.y};
     last = q;
-    // With kMerge, drop the vertices where the path goes straight on.
-    while (kMerge && n >= 2 && straightThrough(kept[n - 2], kept[n - 1], q)) --n;
+    // With kMerge, the last point kept goes when the path goes straight on through it. No kept
+    // point is such a vertex, and whether one is depends only on the directions of its two
+    // edges, so the one before it never goes as well, and `along` keeps its direction.
+    if (kMerge && n >= 2 && straightOn(along, step)) {
+      kept[n - 1] = q;
+      continue;
+    }
+    along = step;
     kept[n++] = q;
   }
   out.resize(n);
