@@ -7,16 +7,17 @@
 // lexicographic turning vertices into chains whose vertices increase lexicographically (x, then
 // y). The sweep visits only the turning vertices, sorted up front (a radix sort of their keys):
 // at each, two chains enter or leave the status. Two chains next to each other in the status are
-// tested edge against edge by walking both, lazily: when they stop being neighbours (a pair
-// starts between them, or one of them ends), every pair of their edges whose spans overlap up
-// to that point is tested, and each chain keeps how far it has been tested against the chain
-// below and the one above. Before the lexicographically first contact of two edges the status is
-// in order, the two chains that meet there are neighbours just before it (Shamos and Hoey), and
-// their walk reaches it when they stop being neighbours, at or after it. For n vertices in c
-// chains: the sort of the c turning vertices (linear, a radix sort, from 64), O(log c) per
-// chain start (O(1) when it starts next to the last one started), and two edge tests per edge
-// (one with each neighbouring chain); no arithmetic beyond exact int64 orientation (every point
-// is a grid point). The test stops at the first contact it finds.
+// tested lazily, when they stop being neighbours (a pair starts between them, or one of them
+// ends): their vertices since they became neighbours are taken in lexicographic order, each
+// against the other chain's edge that spans it, and must lie strictly on its side (walk()). Each
+// chain keeps how far its vertices have been tested against the chain below and the one above.
+// Before the lexicographically first contact the status is in order, and the two chains that
+// meet there are neighbours just before it (Shamos and Hoey); their walk reaches it when they
+// stop being neighbours, at or after it. For n vertices in c chains: the sort of the c turning
+// vertices (linear, a radix sort, from 64), O(log c) per chain start (O(1) when it starts next to
+// the last one started), and two orientations per vertex (one against each neighbouring chain);
+// no arithmetic beyond exact int64 orientation (every point is a grid point). The test stops at
+// the first contact it finds.
 //
 // Simple here means: the ring's vertices are distinct, consecutive edges meet only at their
 // shared vertex and are not collinear (a straight-on vertex or a spike, which turnsOnce(), asked
@@ -33,22 +34,6 @@
 
 namespace roiclip::detail {
 namespace {
-
-// The closed segments a-b and c-d (a < b, c < d lexicographically) share a point.
-bool segmentsMeet(IPoint a, IPoint b, IPoint c, IPoint d) {
-  if (b.x < c.x || d.x < a.x) return false;
-  if (std::max(std::min(a.y, b.y), std::min(c.y, d.y)) >
-      std::min(std::max(a.y, b.y), std::max(c.y, d.y))) {
-    return false;
-  }
-  const int o1 = orientInGrid(a, b, c), o2 = orientInGrid(a, b, d);
-  if (o1 == o2 && o1 != 0) return false;
-  const int o3 = orientInGrid(c, d, a), o4 = orientInGrid(c, d, b);
-  if (o3 == o4 && o3 != 0) return false;
-  // Either the lines cross within both segments, or all four points are collinear and the
-  // boxes (tested above) overlap: then so do the segments.
-  return true;
-}
 
 // The edge of a chain where the status's search meets point q: its cursor `at` moves on to the
 // first edge that does not end before q. The chain is in the status at q, so it starts before q
@@ -189,41 +174,40 @@ class ChainSweep {
     return true;
   }
 
-  // Chains lo and hi (hi just above lo) have been neighbours in the status since their cursors'
-  // edges: test every pair of their edges whose spans (lexicographic, from start to end) overlap,
-  // up to the pairs that begin at point t, moving the cursors on. Every point two segments share
-  // lies in both spans, so each contact up to t between the two chains is found. False at a
-  // contact.
+  // Chains lo and hi (hi just above lo) have been neighbours in the status since a point where
+  // lo lay strictly below hi. Their vertices after their cursors' edges, up to point t, are
+  // taken in lexicographic order, each tested against the other chain's edge that spans it (the
+  // cursors move on): a vertex of lo must lie strictly below hi's edge, one of hi strictly above
+  // lo's. Then the vertical gap between the two chains, linear between these vertices (sheared
+  // by an infinitesimal so that the lexicographic order is the order in x: orientations do not
+  // change), is positive at each of them, so the chains do not meet up to t. False at a contact.
   //
-  // Two edges of different chains may not meet, with one exception: the first edges of two
-  // chains that start at one turning vertex are consecutive ring edges, and so are the last
-  // edges of two that end at one. They share that vertex, and turnsOnce() has ruled out their
-  // overlapping along it (collinear consecutive edges).
+  // Two chains may meet only where both end at one turning vertex (their last edges are
+  // consecutive ring edges); two that start at one share its vertex, which no test here takes
+  // (turnsOnce() has ruled out their first edges overlapping along each other).
   bool walk(ChainNode& lo, ChainNode& hi, const IPoint& t) const {
-    const int hiIndex = int(&hi - s_.chains.data());
     ChainCursor& e = lo.up;
     ChainCursor& f = hi.down;
     IPoint a = lo.start(e), b = lo.end(e), c = hi.start(f), d = hi.end(f);
-    bool sharedStart =
-        e.left == lo.edges - 1 && f.left == hi.edges - 1 && lo.startPartner == hiIndex;
     for (;;) {
-      // Edges ending at one point: the last edges of two chains that end at one vertex, or a
-      // contact.
-      if (b == d) return e.left == 0 && f.left == 0 && lo.endPartner == hiIndex;
-      if (!sharedStart && segmentsMeet(a, b, c, d)) return false;
-      sharedStart = false;
       if (b < d) {
-        if (t < b || e.left == 0) return true;
+        if (t < b) return true;
+        if (orientInGrid(c, d, b) >= 0) return false;  // b on or above hi's edge
+        if (e.left == 0) return true;                  // lo ends at b, which is t
         e.i = lo.after(e.i);
         --e.left;
         a = b;
         b = lo.end(e);
-      } else {
-        if (t < d || f.left == 0) return true;
+      } else if (d < b) {
+        if (t < d) return true;
+        if (orientInGrid(a, b, d) <= 0) return false;  // d on or below lo's edge
+        if (f.left == 0) return true;                  // hi ends at d, which is t
         f.i = hi.after(f.i);
         --f.left;
         c = d;
         d = hi.end(f);
+      } else {  // both edges end at one point
+        return e.left == 0 && f.left == 0 && lo.endPartner == int(&hi - s_.chains.data());
       }
     }
   }
@@ -248,8 +232,14 @@ class ChainSweep {
       at = above != nullptr ? status_.iterator_to(*above) : status_.end();
     }
     ChainNode* below = above != nullptr ? above->below : top_;
-    // The two neighbours stop being neighbours at p.
+    // The two neighbours stop being neighbours at p. The chain below passes strictly below p
+    // (the search's order), the one above must pass strictly above it. A chain that had no
+    // neighbour on the new chains' side has its vertices up to p tested against none: its
+    // cursor moves on to p untested.
     if (below != nullptr && above != nullptr && !walk(*below, *above, p)) return false;
+    if (above != nullptr && !EdgeBelowPoint{}(p, *above)) return false;  // p on its edge
+    if (below != nullptr && above == nullptr) below->up = edgeAt(*below, p);
+    if (above != nullptr && below == nullptr) above->down = above->at;  // set by edgeAt()
     status_.insert_before(at, *lo);
     status_.insert_before(at, *hi);
     finger_ = hi;

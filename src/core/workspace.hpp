@@ -72,8 +72,9 @@ struct ChainCursor {
 /// A monotone chain of a ring in the simple-ring test (simple_ring.cpp): its edges run from ring
 /// index `first` (its smallest vertex) `edges` steps in direction `step`, lexicographically
 /// increasing; its status links; and three places along it, each only moving on: `down` and `up`,
-/// how far its edges have been tested against the chain below and the one above it, and `at`, the
-/// edge where the status's search last located a point against it.
+/// how far its vertices have been tested against the chain below and the one above it (the end
+/// of the cursor's edge is the first vertex not tested yet), and `at`, the edge where the status's
+/// search last located a point against it.
 struct ChainNode {
   StatusHook hook;
   ChainNode* below = nullptr;
