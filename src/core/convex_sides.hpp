@@ -26,18 +26,24 @@ struct CcwRing {
 /// The most sides SideLines takes (one bit each in a mask).
 constexpr int kMaxSides = 30;
 
-/// The side lines of a convex ring taken counter-clockwise, each as its start and direction, to
-/// classify points against all of them (orientInGrid() with the differences taken once). At most
+/// The side lines of a convex ring taken counter-clockwise, each as its direction and the cross
+/// product of its direction with its start, to classify points against all of them (orientInGrid()
+/// with what depends on the side alone taken once: two products and a comparison a side). At most
 /// kMaxSides sides.
 struct SideLines {
-  IPoint start[kMaxSides], dir[kMaxSides];
+  /// Side j runs from corner j in direction dir[j]; a point p lies left of it when
+  /// dir[j] x p = dir[j].x p.y - dir[j].y p.x exceeds at[j] = dir[j] x corner j. Every grid point
+  /// lies within 2^30 units of the origin, so |dir| <= 2^31, each product is below 2^61 and both
+  /// sides of the comparison fit int64: the same test as dir[j] x (p - corner j) > 0.
+  IPoint dir[kMaxSides];
+  std::int64_t at[kMaxSides];
   int m = 0;
   SideLines(const std::vector<IPoint>& convex, int orientation) : m(int(convex.size())) {
     const CcwRing c{&convex, orientation < 0};
     for (int j = 0; j < m; ++j) {
-      start[j] = c[j];
-      const IPoint b = c[(j + 1) % m];
-      dir[j] = {b.x - start[j].x, b.y - start[j].y};
+      const IPoint a = c[j], b = c[(j + 1) % m];
+      dir[j] = {b.x - a.x, b.y - a.y};
+      at[j] = dir[j].x * a.y - dir[j].y * a.x;
     }
   }
   [[nodiscard]] unsigned all() const { return (1U << m) - 1; }
@@ -52,10 +58,9 @@ struct SideLines {
     const int count = kSides > 0 ? kSides : m;
     unsigned left = 0, zeros = 0;
     for (int j = 0; j < count; ++j) {
-      const std::int64_t l = dir[j].x * (p.y - start[j].y);
-      const std::int64_t r = dir[j].y * (p.x - start[j].x);
-      left |= unsigned(l > r) << j;
-      zeros |= unsigned(l == r) << j;
+      const std::int64_t v = dir[j].x * p.y - dir[j].y * p.x;
+      left |= unsigned(v > at[j]) << j;
+      zeros |= unsigned(v == at[j]) << j;
     }
     return {left, zeros};
   }
