@@ -40,8 +40,7 @@ namespace {
 // and ends after it (a chain ending at q would be a second ring vertex on q, rejected before).
 inline ChainCursor edgeAt(const ChainNode& c, const IPoint& q) {
   while (c.at.left > 0 && c.end(c.at) < q) {
-    c.at.i = c.after(c.at.i);
-    --c.at.left;
+    c.at = c.next(c.at);
   }
   return c.at;
 }
@@ -194,16 +193,14 @@ class ChainSweep {
         if (t < b) return true;
         if (orientInGrid(c, d, b) >= 0) return false;  // b on or above hi's edge
         if (e.left == 0) return true;                  // lo ends at b, which is t
-        e.i = lo.after(e.i);
-        --e.left;
+        e = lo.next(e);
         a = b;
         b = lo.end(e);
       } else if (d < b) {
         if (t < d) return true;
         if (orientInGrid(a, b, d) <= 0) return false;  // d on or below lo's edge
         if (f.left == 0) return true;                  // hi ends at d, which is t
-        f.i = hi.after(f.i);
-        --f.left;
+        f = hi.next(f);
         c = d;
         d = hi.end(f);
       } else {  // both edges end at one point
@@ -217,7 +214,7 @@ class ChainSweep {
     ChainNode* lo = &s_.chains[std::size_t(i)];
     ChainNode* hi = &s_.chains[std::size_t(j)];
     for (ChainNode* c : {lo, hi}) {
-      c->down = c->up = c->at = ChainCursor{c->first, c->edges - 1};
+      c->down = c->up = c->at = ChainCursor{c->after(c->first), c->edges - 1};
     }
     const int turn = orientInGrid(p, lo->end(lo->at), hi->end(hi->at));
     if (turn == 0) return false;  // overlapping first edges

@@ -63,10 +63,10 @@ struct StatusNode {
   StatusNode* above = nullptr;  ///< the node next above it, null at the top
 };
 
-/// One edge of a monotone chain, as a place along it: the edge from ring index `i` on, with `left`
-/// edges of the chain after it.
+/// One edge of a monotone chain, as a place along it: the edge that ends at ring index `j`, with
+/// `left` edges of the chain after it.
 struct ChainCursor {
-  int i = 0;
+  int j = 0;
   int left = -1;
 };
 /// A monotone chain of a ring in the simple-ring test (simple_ring.cpp): its edges run from ring
@@ -94,8 +94,14 @@ struct ChainNode {
     i += step;
     return i == size ? 0 : i < 0 ? size - 1 : i;
   }
-  [[nodiscard]] IPoint start(ChainCursor c) const { return points[c.i]; }
-  [[nodiscard]] IPoint end(ChainCursor c) const { return points[after(c.i)]; }
+  [[nodiscard]] int before(int i) const {
+    i -= step;
+    return i == size ? 0 : i < 0 ? size - 1 : i;
+  }
+  [[nodiscard]] IPoint start(ChainCursor c) const { return points[before(c.j)]; }
+  [[nodiscard]] IPoint end(ChainCursor c) const { return points[c.j]; }
+  /// The next edge's cursor.
+  [[nodiscard]] ChainCursor next(ChainCursor c) const { return {after(c.j), c.left - 1}; }
   /// The status is built by position (insert_before), never by comparing two nodes: the
   /// comparison the tree's type asks for.
   struct NeverCompared {
