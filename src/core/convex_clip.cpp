@@ -290,36 +290,40 @@ bool outsideOneSide(const std::vector<IPoint>& ring, const std::vector<IPoint>& 
 int convexOrientation(const std::vector<IPoint>& ring) {
   const std::size_t n = ring.size();
   if (n < 3) return 0;
+  const IPoint* const p = ring.data();
+  const auto sign = [](std::int64_t v) { return int(v > 0) - int(v < 0); };
+  // Edge i runs from vertex i to vertex i + 1 (edge n - 1 back to vertex 0). The signs of the
+  // edges' x and y before edge 0: those of the last edge with a non-zero one.
+  int lastDx = 0, lastDy = 0;
+  for (std::size_t k = n; k > 0 && (lastDx == 0 || lastDy == 0); --k) {
+    const IPoint a = p[k - 1], b = p[k == n ? 0 : k];
+    if (lastDx == 0) lastDx = sign(b.x - a.x);
+    if (lastDy == 0) lastDy = sign(b.y - a.y);
+  }
   int turn = 0;
   int xFlips = 0, yFlips = 0;
-  int lastDx = 0, lastDy = 0;
-  const auto at = [&](std::size_t i) { return ring[i < n ? i : i - n]; };  // i < 2 n
+  IPoint d{p[0].x - p[n - 1].x, p[0].y - p[n - 1].y};
   for (std::size_t i = 0; i < n; ++i) {
-    const IPoint a = ring[i], b = at(i + 1), c = at(i + 2);
-    const int o = orientInGrid(a, b, c);
-    if (o == 0) return 0;  // straight runs were merged: this is a reversal
+    const IPoint b = p[i + 1 == n ? 0 : i + 1];
+    const IPoint e{b.x - p[i].x, b.y - p[i].y};
+    // The turn at vertex i (orientInGrid(): exact in int64 for grid points).
+    const std::int64_t l = d.x * e.y, r = d.y * e.x;
+    if (l == r) return 0;  // straight runs were merged: this is a reversal
+    const int o = l > r ? 1 : -1;
     if (turn == 0) turn = o;
     if (o != turn) return 0;
-    // Winding once: the edge direction's x and y signs each change exactly twice.
-    const int dx = (b.x > a.x) - (b.x < a.x), dy = (b.y > a.y) - (b.y < a.y);
+    // Winding once: the edge direction's x and y signs each change exactly twice round the ring.
+    const int dx = sign(e.x), dy = sign(e.y);
     if (dx != 0) {
-      if (lastDx != 0 && dx != lastDx) ++xFlips;
+      xFlips += int(dx != lastDx);
       lastDx = dx;
     }
     if (dy != 0) {
-      if (lastDy != 0 && dy != lastDy) ++yFlips;
+      yFlips += int(dy != lastDy);
       lastDy = dy;
     }
+    d = e;
   }
-  // Close the cycle of sign changes (first non-zero direction against the last).
-  int firstDx = 0, firstDy = 0;
-  for (std::size_t i = 0; i < n && (firstDx == 0 || firstDy == 0); ++i) {
-    const IPoint a = ring[i], b = at(i + 1);
-    if (firstDx == 0) firstDx = (b.x > a.x) - (b.x < a.x);
-    if (firstDy == 0) firstDy = (b.y > a.y) - (b.y < a.y);
-  }
-  if (firstDx != 0 && lastDx != 0 && firstDx != lastDx) ++xFlips;
-  if (firstDy != 0 && lastDy != 0 && firstDy != lastDy) ++yFlips;
   return xFlips <= 2 && yFlips <= 2 ? turn : 0;
 }
 

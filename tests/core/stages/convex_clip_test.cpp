@@ -5,6 +5,7 @@
 // random self-intersecting subjects and random convex clips, under every pair of fill rules.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -54,6 +55,50 @@ TEST(ConvexOrientation, AgreesWithExactTurnsAtTheRangesEnds) {
     convex += expected != 0 ? 1 : 0;
   }
   EXPECT_GT(convex, 1000);
+}
+
+// Rings of 3 to 9 vertices: random points on a small grid, rounded star polygons {n/k} (every
+// turn one sign, winding k times) and regular polygons, each also reversed and rotated. Oracle:
+// every turn has one sign (exact 128-bit orient()) and the turning angles, summed in doubles, come
+// to one full turn.
+TEST(ConvexOrientation, AgreesWithTheTurningAngleOnRandomRings) {
+  std::mt19937 rng(20261203);
+  int convex = 0, sameTurnNotOnce = 0;
+  for (int trial = 0; trial < 30000; ++trial) {
+    std::vector<IPoint> ring;
+    const int n = 3 + int(rng() % 7);
+    if (trial % 3 == 0) {
+      for (int i = 0; i < n; ++i)
+        ring.push_back({std::int64_t(rng() % 7), std::int64_t(rng() % 7)});
+    } else {
+      const int k = trial % 3 == 1 ? 1 : 1 + int(rng() % std::max(1, (n - 1) / 2));
+      const double r = 4.0 + double(rng() % 200), phase = double(rng() % 628) / 100.0;
+      for (int i = 0; i < n; ++i) {
+        const double a = phase + 2.0 * M_PI * double(i * k) / double(n);
+        ring.push_back({std::llround(r * std::cos(a)), std::llround(r * std::sin(a))});
+      }
+    }
+    if (rng() % 2 == 0) std::reverse(ring.begin(), ring.end());
+    std::rotate(ring.begin(), ring.begin() + std::ptrdiff_t(rng() % ring.size()), ring.end());
+    const std::size_t m = ring.size();
+    int turn = 0;
+    double angle = 0.0;
+    for (std::size_t i = 0; i < m; ++i) {
+      const IPoint a = ring[i], b = ring[(i + 1) % m], c = ring[(i + 2) % m];
+      const int o = detail::orient(a, b, c);
+      turn = o == 0 || (turn != 0 && o != turn) ? 2 : turn == 2 ? 2 : o;
+      const double ux = double(b.x - a.x), uy = double(b.y - a.y);
+      const double vx = double(c.x - b.x), vy = double(c.y - b.y);
+      angle += std::atan2(ux * vy - uy * vx, ux * vx + uy * vy);
+    }
+    const bool once = std::fabs(std::fabs(angle) - 2.0 * M_PI) < 1e-6;
+    const int expected = turn != 2 && once ? turn : 0;
+    ASSERT_EQ(detail::convexOrientation(ring), expected) << "trial " << trial;
+    convex += expected != 0 ? 1 : 0;
+    sameTurnNotOnce += turn != 2 && !once ? 1 : 0;
+  }
+  EXPECT_GT(convex, 5000);
+  EXPECT_GT(sameTurnNotOnce, 1000);  // stars: every turn one sign, winding more than once
 }
 
 // The pre-clipped edges of `rings` resolved alone (stages 1 to 4), as the fast path does.
