@@ -4,7 +4,7 @@
 #include <optional>
 #include <string>
 #include <utility>
-#if defined(__SSE2__)
+#if defined(__SSE2__) && defined(__x86_64__)
 #include <emmintrin.h>
 #endif
 
@@ -98,8 +98,9 @@ struct FastSnap {
   }
   static constexpr double kRound = 6755399441055744.0;  // 1.5 * 2^52, as detail::roundToUnits
   static constexpr double kMax = double(Grid::kMaxUnits);
-#if defined(__SSE2__)
-  // Both coordinates in one SSE2 register: the same operations lane by lane.
+#if defined(__SSE2__) && defined(__x86_64__)
+  // Both coordinates in one SSE2 register: the same operations lane by lane (_mm_cvttsd_si64
+  // needs x86-64).
   bool operator()(const Point& v, IPoint& q) const {
     static_assert(sizeof(Point) == 2 * sizeof(double), "x and y in a row");
     const __m128d round = _mm_set1_pd(kRound);

@@ -279,7 +279,7 @@ class ChainSweep {
   }
 
   // Two chains end at their shared (turning) vertex p: they leave the status, next to each
-  // other, once the edges of each neighbouring pair are tested up to p.
+  // other, once the vertices of each neighbouring pair are tested up to p.
   bool removePair(int i, int j, const IPoint& p) {
     ChainNode* lo = &s_.chains[std::size_t(i)];
     ChainNode* hi = &s_.chains[std::size_t(j)];
