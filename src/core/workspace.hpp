@@ -90,14 +90,10 @@ struct ChainNode {
   ChainCursor down, up;
   mutable ChainCursor at;  ///< moved on by the status's search (a const comparison)
   [[nodiscard]] bool started() const { return up.left >= 0; }
-  [[nodiscard]] int after(int i) const {
-    i += step;
-    return i == size ? 0 : i < 0 ? size - 1 : i;
-  }
-  [[nodiscard]] int before(int i) const {
-    i -= step;
-    return i == size ? 0 : i < 0 ? size - 1 : i;
-  }
+  /// The ring index one step along the chain from i, and one step back.
+  [[nodiscard]] int after(int i) const { return wrap(i + step); }
+  [[nodiscard]] int before(int i) const { return wrap(i - step); }
+  [[nodiscard]] int wrap(int i) const { return i == size ? 0 : i < 0 ? size - 1 : i; }
   [[nodiscard]] IPoint start(ChainCursor c) const { return points[before(c.j)]; }
   [[nodiscard]] IPoint end(ChainCursor c) const { return points[c.j]; }
   /// The next edge's cursor.
