@@ -218,7 +218,8 @@ PolygonSet simplify(const Paths& paths, FillRule rule, const Options& options) {
 
 PolygonSet clip(ClipOp op, const Paths& subject, const Paths& clipPaths, FillRule subjectRule,
                 FillRule clipRule, const Options& options) {
-  const Grid grid = resolveGrid(options.grid, subject, clipPaths);  // one grid for both operands
+  detail::Box subjectBox;  // one grid for both operands, fitted to their box
+  const Grid grid = detail::resolveGrid(options.grid, subject, clipPaths, subjectBox);
   const detail::WorkspaceLease ws;
   // Each operand is snapped and validated once, into the rings the last call left; an
   // intersection reads the clip first (its errors are reported first, as the ROI is usually the
@@ -226,6 +227,12 @@ PolygonSet clip(ClipOp op, const Paths& subject, const Paths& clipPaths, FillRul
   detail::SnappedOperand s, c;
   if (op == ClipOp::Intersection) {
     c = detail::snapOperand(clipPaths, 1, clipRule, grid, true, &*ws);
+    // A subject whose box lies outside a convex ROI (most contours of an image, for a tag's
+    // ROI) leaves with nothing, unsnapped: its box has shown every vertex valid.
+    if (c.convex != 0 && detail::boxOutsideConvex(subjectBox, grid, c.rings[0], c.convex)) {
+      detail::giveBackRings(c, 1, *ws);
+      return {};
+    }
     // With a convex clip the fast path never asks whether the subject is convex.
     s = detail::snapOperand(subject, 0, subjectRule, grid, c.convex == 0, &*ws);
   } else {

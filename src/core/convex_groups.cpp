@@ -12,6 +12,7 @@
 // sweep-free paths where they apply; the groups are found by recursive x-y cuts (as page
 // segmentation cuts a page into blocks).
 #include <algorithm>
+#include <optional>
 
 #include "convex_sides.hpp"
 #include "pipeline.hpp"
@@ -168,6 +169,23 @@ void cutIntoGroups(std::vector<RingBox>& boxes, RingGroups& out) {
 }
 
 }  // namespace
+
+bool boxOutsideConvex(const Box& box, const Grid& grid, const std::vector<IPoint>& convex,
+                      int convexOrientation) {
+  if (box.empty() || !box.finite || convex.size() > std::size_t(kMaxSides)) return false;
+  const std::optional<std::int64_t> x0 = grid.toUnits(box.minX, grid.origin.x),
+                                    x1 = grid.toUnits(box.maxX, grid.origin.x),
+                                    y0 = grid.toUnits(box.minY, grid.origin.y),
+                                    y1 = grid.toUnits(box.maxY, grid.origin.y);
+  if (!x0 || !x1 || !y0 || !y1) return false;
+  const SideLines sides(convex, convexOrientation);
+  unsigned anyLeft = 0;  // the sides some corner lies strictly left of
+  for (const IPoint corner :
+       {IPoint{*x0, *y0}, IPoint{*x1, *y0}, IPoint{*x1, *y1}, IPoint{*x0, *y1}}) {
+    anyLeft |= sides.classify(corner).left;
+  }
+  return anyLeft != sides.all();
+}
 
 bool groupRingsForConvex(const Rings& rings, const std::vector<IPoint>& convex,
                          int convexOrientation, RingGroups& out) {

@@ -184,8 +184,12 @@ void Box::add(const Paths& paths) {
 #endif
   // The short rounding is exact below 2^51 in magnitude only (from -2^52 to -2^51 it keeps
   // halves): a larger box is not called integral. -0.0 is a zero distance.
-  integral = integral && (offInteger & ~kSignBit) == 0 &&
-             std::max({-lo[0], -lo[1], hi[0], hi[1]}) < 0x1p51;
+  const bool small = std::max({-lo[0], -lo[1], hi[0], hi[1]}) < 0x1p51;
+  integral = integral && (offInteger & ~kSignBit) == 0 && small;
+  // Below 2^51, each distance is at most 1/2 (exponent field at most 0x3fe), and so is their or
+  // (at most 0x3ff); NaN leaves 0x7ff. An infinity fails `small`, as does a larger box (then it
+  // is not known: not called finite).
+  finite = finite && small && (offInteger >> 52 & 0x7ff) != 0x7ff;
   if (std::isfinite(lo[0]) && std::isfinite(lo[1]) && std::isfinite(hi[0]) &&
       std::isfinite(hi[1])) {
     minX = lo[0], minY = lo[1], maxX = hi[0], maxY = hi[1];
@@ -285,12 +289,19 @@ std::optional<Grid> fitDecimalGrid(const Box& range, const Paths& a, const Paths
 }  // namespace detail
 
 Grid resolveGrid(const Grid& grid, const Paths& subject, const Paths& clip) {
+  detail::Box subjectBox;
+  return detail::resolveGrid(grid, subject, clip, subjectBox);
+}
+
+Grid detail::resolveGrid(const Grid& grid, const Paths& subject, const Paths& clip,
+                         Box& subjectBox) {
+  subjectBox = {};
   if (!grid.isFitted()) {
     checkFixed(grid);
     return grid;
   }
-  detail::Box box;
-  box.add(subject);
+  subjectBox.add(subject);
+  detail::Box box = subjectBox;
   box.add(clip);
   if (box.empty()) return Grid::fixed(1.0);
   const Grid binary = detail::fitBinaryGrid(box);

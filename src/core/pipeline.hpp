@@ -430,10 +430,26 @@ struct Box {
   /// Every coordinate added is a finite integer below 2^51 in magnitude (false also when one is
   /// larger): then every power-of-two grid of scale 1 or more holds them all (resolveGrid()).
   bool integral = true;
+  /// No coordinate added is NaN or infinite: then every vertex of those paths lies in the box.
+  bool finite = true;
   /// One pass over the coordinates (grid.cpp).
   void add(const Paths& paths);
   [[nodiscard]] bool empty() const { return !(minX <= maxX); }
 };
+
+/// resolveGrid() that also gives the box of the subject's vertices, which a fitted grid is made
+/// from; with a fixed grid no pass is made and `subjectBox` stays empty (nothing known).
+Grid resolveGrid(const Grid& grid, const Paths& subject, const Paths& clip, Box& subjectBox);
+
+/// True when every vertex of some paths lies in the closed outer half-plane of one side of the
+/// strictly convex ring `convex` (of orientation `convexOrientation`), decided from their box
+/// before they are snapped: then they fill nothing inside it, and their intersection with it is
+/// empty. Snapping is monotone, so the snapped box's corners are the box's corners snapped; the
+/// half-plane is convex, so it holds the box when it holds its corners. False when the box does
+/// not tell (empty, not finite, outside the grid's range: the snapping reports those) or C has
+/// more than kMaxSides sides. Constant time.
+bool boxOutsideConvex(const Box& box, const Grid& grid, const std::vector<IPoint>& convex,
+                      int convexOrientation);
 
 /// The grids a fitted grid resolves to (grid.cpp; resolveGrid() and PreparedRegion use them).
 /// The power-of-two grid fitted to a box: the largest s = 2^e with s * side <= 2^31 - 8, the

@@ -61,9 +61,11 @@ struct PreparedRegion::Impl {
   // fixed grid; on a fitted one when every finite vertex lies in the grid's range and, if the
   // grid holds the region exactly, the subject too (the free function's grid then holds both
   // exactly, and exact inputs give the same correctly rounded output on any grid).
-  [[nodiscard]] bool takes(const Paths& paths) const {
+  // `box` receives the box of the paths' finite vertices (empty on a fixed grid: no pass).
+  [[nodiscard]] bool takes(const Paths& paths, detail::Box& box) const {
+    box = {};
     if (!options.grid.isFitted()) return true;  // a fixed grid: snapping reports what is not
-    const detail::Box box = boxOf(paths, 0.0);
+    box = boxOf(paths, 0.0);
     for (const double x : {box.minX, box.maxX}) {
       if (!box.empty() && !grid.toUnits(x, grid.origin.x)) return false;
     }
@@ -92,13 +94,18 @@ PreparedRegion::PreparedRegion(PreparedRegion&& other) noexcept = default;
 PreparedRegion& PreparedRegion::operator=(PreparedRegion&& other) noexcept = default;
 
 PolygonSet PreparedRegion::clip(ClipOp op, const Paths& subject, FillRule subjectRule) const {
-  if (!impl_->takes(subject)) {
+  detail::Box box;
+  if (!impl_->takes(subject, box)) {
     return roiclip::clip(op, subject, impl_->source, subjectRule, impl_->rule, impl_->options);
+  }
+  const detail::SnappedOperand& region = impl_->region;
+  if (op == ClipOp::Intersection && region.convex != 0 &&
+      detail::boxOutsideConvex(box, impl_->grid, region.rings[0], region.convex)) {
+    return {};  // as the free function: outside the convex ROI, unsnapped
   }
   const detail::WorkspaceLease ws(impl_->workspace);
   detail::SnappedOperand s = detail::snapOperand(subject, 0, subjectRule, impl_->grid, true, &*ws);
-  PolygonSet result =
-      detail::clipSnapped(op, s, impl_->region, impl_->grid, impl_->options.limits, *ws);
+  PolygonSet result = detail::clipSnapped(op, s, region, impl_->grid, impl_->options.limits, *ws);
   detail::giveBackRings(s, 0, *ws);
   return result;
 }
@@ -112,7 +119,8 @@ PolygonSet PreparedRegion::intersect(const Paths& subject, FillRule subjectRule)
 }
 
 Paths PreparedRegion::clipLines(const Paths& lines, LinePart part) const {
-  if (!impl_->takes(lines)) {
+  detail::Box box;
+  if (!impl_->takes(lines, box)) {
     return roiclip::clipLines(lines, impl_->source, impl_->rule, part, impl_->options);
   }
   std::vector<detail::InputEdge> edges;

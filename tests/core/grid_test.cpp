@@ -213,6 +213,30 @@ TEST(Grid, TheBoxIsIntegralOnlyForFiniteIntegers) {
   EXPECT_FALSE(box.integral);
 }
 
+// The box's finite flag: false when a coordinate is NaN or infinite (the box skips those), and
+// when one reaches 2^51 in magnitude (not told apart there); true for any other data.
+TEST(Grid, TheBoxIsFiniteOnlyWithoutNanOrInfinity) {
+  const auto finite = [](const Path& path) {
+    detail::Box box;
+    box.add({path});
+    return box.finite;
+  };
+  EXPECT_TRUE(finite({{0.0, 7.0}, {-1920.5, 1e-300}, {0x1p51 - 1, -0x1p51 + 1}, {0.1, -0.0}}));
+  EXPECT_TRUE(finite({}));
+  EXPECT_FALSE(finite({{0.0, 7.0}, {1.0, std::nan("")}}));
+  EXPECT_FALSE(finite({{0.0, 7.0}, {-std::nan(""), 1.5}}));
+  EXPECT_FALSE(finite({{0.0, 7.0}, {INFINITY, 1.5}}));
+  EXPECT_FALSE(finite({{0.25, 7.0}, {1.0, -INFINITY}}));
+  EXPECT_FALSE(finite({{0.0, 7.0}, {0x1p52, 1.5}}));
+  detail::Box box;  // finite until a path that is not
+  box.add({{{1.5, 2}, {3, 4}}});
+  EXPECT_TRUE(box.finite);
+  box.add({{{1, std::nan("")}}});
+  EXPECT_FALSE(box.finite);
+  box.add({{{1, 2}}});
+  EXPECT_FALSE(box.finite);
+}
+
 // resolveGrid() takes the power-of-two grid without the second pass (holdsExactly()) for integer
 // data; on random data of every kind it chooses what the two passes choose.
 TEST(Grid, TheIntegerShortcutChoosesWhatTheExactTestChooses) {

@@ -192,5 +192,105 @@ TEST(StageConvexGroups, RandomScenesMatchTheGeneralPath) {
   EXPECT_GT(inClosed, 500);
 }
 
+// boxOutsideConvex() decides from the unsnapped box what the snapped vertices show: every one
+// in the closed outer half-plane of one side of C. Random point sets around random convex ROIs,
+// on integer and on decimal data (a decimal grid), against the vertices one by one; when it
+// says outside, the intersection is empty by the general path too.
+TEST(StageConvexGroups, BoxOutsideConvexIsEveryVertexOutsideOneSide) {
+  std::mt19937 rng(20261204);
+  int outside = 0, inside = 0;
+  for (int trial = 0; trial < 600; ++trial) {
+    const bool decimal = trial % 3 == 2;
+    const auto coordinate = [&](double lo, double hi) {
+      const double v = std::uniform_real_distribution<double>(lo, hi)(rng);
+      return decimal ? std::round(v * 100) / 100 : std::round(v);
+    };
+    std::vector<Point> corners;
+    for (int i = 0; i < 3 + int(rng() % 6); ++i) {
+      corners.emplace_back(coordinate(0, 100), coordinate(0, 100));
+    }
+    const Path roi = testing::convexHull({Path(corners.begin(), corners.end())}, trial % 2 == 1)[0];
+    if (roi.size() < 3) continue;
+    // A small set near or on the ROI's boundary: a few points, or a ring along one of its sides
+    // (every vertex on the side line, then just outside, then just inside).
+    Path ring;
+    if (trial % 4 == 0) {
+      const std::size_t j = rng() % roi.size();
+      const Point a = roi[j], b = roi[(j + 1) % roi.size()];
+      const double shift = double(int(trial / 4 % 3) - 1);  // -1, 0, +1: along the outward normal
+      const Point n = Point(b.y - a.y, a.x - b.x);          // outward for a counter-clockwise ROI
+      const double len = std::hypot(n.x, n.y);
+      for (const double t : {0.25, 0.75}) {
+        ring.push_back({std::round(a.x + t * (b.x - a.x) + shift * n.x / len * 2),
+                        std::round(a.y + t * (b.y - a.y) + shift * n.y / len * 2)});
+      }
+      ring.push_back({ring[1].x + n.x / len * 5, ring[1].y + n.y / len * 5});
+    } else {
+      const double cx = coordinate(-40, 140), cy = coordinate(-40, 140);
+      for (int i = 0; i < 3 + int(rng() % 5); ++i) {
+        ring.push_back({cx + coordinate(-15, 15), cy + coordinate(-15, 15)});
+      }
+    }
+    const Paths set{ring};
+    detail::Box box;
+    const Grid grid = detail::resolveGrid(Options{}.grid, set, Paths{roi}, box);
+    const detail::Rings c = detail::snapRings({roi}, 1, grid);
+    const int orientation = detail::convexOrientation(c[0]);
+    if (orientation == 0) continue;
+    const detail::Rings rings = detail::snapRings(set, 0, grid);
+    bool want = false;  // some side with every vertex on it or right of it (outward)
+    const std::size_t m = c[0].size();
+    for (std::size_t j = 0; j < m && !want; ++j) {
+      const detail::IPoint a = c[0][j], b = c[0][(j + 1) % m];
+      bool all = true;
+      for (const auto& r : rings) {
+        for (const detail::IPoint p : r) all = all && detail::orient(a, b, p) * orientation <= 0;
+      }
+      want = all;
+    }
+    const bool got = detail::boxOutsideConvex(box, grid, c[0], orientation);
+    // The box's corners are not vertices: a box may reach past a side where no vertex does, so
+    // the box can say "not outside" for a set that is; never the other way round.
+    if (got) {
+      EXPECT_TRUE(want) << "trial " << trial;
+    }
+    outside += got ? 1 : 0;
+    inside += !want ? 1 : 0;
+    if (got) {
+      for (FillRule rule : kRules) {
+        EXPECT_TRUE(intersect(set, {roi}, rule).empty()) << "trial " << trial;
+        EXPECT_EQ(stages::generalIntersect(set, {roi}, rule, rule).area(), 0.0)
+            << "trial " << trial;
+      }
+    }
+  }
+  EXPECT_GT(outside, 150);
+  EXPECT_GT(inside, 150);
+}
+
+// The box decides only for finite vertices within the grid's range: a NaN or an out-of-range
+// vertex far outside the ROI is reported as before, by the free function and a PreparedRegion.
+TEST(StageConvexGroups, BoxOutsideConvexLeavesBadVerticesToTheSnapping) {
+  const Path roi = box(0, 0, 100, 100);
+  detail::Box nanBox;
+  nanBox.add({{{200, 200}, {210, std::nan("")}, {220, 230}}});
+  EXPECT_FALSE(nanBox.finite);
+  EXPECT_FALSE(
+      detail::boxOutsideConvex(nanBox, Grid::fixed(1.0), {{0, 0}, {100, 0}, {100, 100}}, 1));
+  const Paths withNan{{{200, 200}, {210, std::nan("")}, {220, 230}}};
+  EXPECT_THROW(intersect(withNan, {roi}, FillRule::NonZero), InvalidInputError);
+  EXPECT_THROW(PreparedRegion({roi}, FillRule::NonZero).intersect(withNan, FillRule::NonZero),
+               InvalidInputError);
+  const Paths withInfinity{{{200, 200}, {210, INFINITY}, {220, 230}}};
+  EXPECT_THROW(intersect(withInfinity, {roi}, FillRule::NonZero), InvalidInputError);
+  // On a fixed grid nothing is read before the snapping: out of its range is out of range.
+  const Paths far{{{5e9, 5e9}, {5e9 + 10, 5e9}, {5e9, 5e9 + 10}}};
+  EXPECT_THROW(intersect(far, {roi}, FillRule::NonZero, Grid::fixed(1.0)), InvalidInputError);
+  // The same set without the bad vertex is outside: empty, from both.
+  const Paths fine{{{200, 200}, {210, 220}, {220, 230}}};
+  EXPECT_TRUE(intersect(fine, {roi}, FillRule::NonZero).empty());
+  EXPECT_TRUE(PreparedRegion({roi}, FillRule::NonZero).intersect(fine, FillRule::NonZero).empty());
+}
+
 }  // namespace
 }  // namespace roiclip
