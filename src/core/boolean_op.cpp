@@ -113,8 +113,14 @@ PolygonSet mergeGroups(std::vector<PolygonSet>& parts) {
 // groups that do not touch within the convex ring, each taking its own path: the sweep then runs
 // only over the groups that need it.
 PolygonSet intersectConvexRing(const SnappedOperand& other, const SnappedOperand& convex,
-                               const Grid& grid, const Limits& limits, Workspace& ws) {
+                               const Grid& grid, const Limits& limits, Workspace& ws,
+                               BoxPlace otherPlace) {
   if (!isFilled(convex.rule, convex.convex)) return {};
+  // One simple contour strictly inside the ROI (its box is): the region it fills, as it is.
+  if (otherPlace == BoxPlace::Inside && other.rings.size() == 1 && other.rings[0].size() >= 3 &&
+      ringIsSimple(other.rings[0], ws.chains)) {
+    return simpleRingRegion(other.rings[0], other.rule, grid);
+  }
   std::uint64_t budget = limits.maxCrossings;
   RingGroups groups;
   // The grouping has seen every vertex: it tells whether a group lies in C (groupInClosed()).
@@ -172,11 +178,14 @@ void giveBackRings(SnappedOperand& snapped, int operand, Workspace& workspace) {
 }
 
 PolygonSet clipSnapped(ClipOp op, SnappedOperand& subject, const SnappedOperand& clip,
-                       const Grid& grid, const Limits& limits, Workspace& ws) {
+                       const Grid& grid, const Limits& limits, Workspace& ws,
+                       BoxPlace subjectPlace) {
   if (op == ClipOp::Intersection) {
     // The region-of-interest case: a convex operand takes the linear pre-clip path.
-    if (clip.convex != 0) return intersectConvexRing(subject, clip, grid, limits, ws);
-    if (subject.convex != 0) return intersectConvexRing(clip, subject, grid, limits, ws);
+    if (clip.convex != 0) return intersectConvexRing(subject, clip, grid, limits, ws, subjectPlace);
+    if (subject.convex != 0) {
+      return intersectConvexRing(clip, subject, grid, limits, ws, BoxPlace::Unknown);
+    }
   }
   BooleanSpec spec;
   spec.maxCrossings = limits.maxCrossings;
@@ -225,11 +234,13 @@ PolygonSet clip(ClipOp op, const Paths& subject, const Paths& clipPaths, FillRul
   // intersection reads the clip first (its errors are reported first, as the ROI is usually the
   // clip).
   detail::SnappedOperand s, c;
+  detail::BoxPlace place = detail::BoxPlace::Unknown;  // of the subject, for a convex clip
   if (op == ClipOp::Intersection) {
     c = detail::snapOperand(clipPaths, 1, clipRule, grid, true, &*ws);
     // A subject whose box lies outside a convex ROI (most contours of an image, for a tag's
     // ROI) leaves with nothing, unsnapped: its box has shown every vertex valid.
-    if (c.convex != 0 && detail::boxOutsideConvex(subjectBox, grid, c.rings[0], c.convex)) {
+    if (c.convex != 0) place = detail::placeBox(subjectBox, grid, c.rings[0], c.convex);
+    if (place == detail::BoxPlace::Outside) {
       detail::giveBackRings(c, 1, *ws);
       return {};
     }
@@ -239,7 +250,7 @@ PolygonSet clip(ClipOp op, const Paths& subject, const Paths& clipPaths, FillRul
     s = detail::snapOperand(subject, 0, subjectRule, grid, true, &*ws);
     c = detail::snapOperand(clipPaths, 1, clipRule, grid, true, &*ws);
   }
-  PolygonSet result = detail::clipSnapped(op, s, c, grid, options.limits, *ws);
+  PolygonSet result = detail::clipSnapped(op, s, c, grid, options.limits, *ws, place);
   detail::giveBackRings(s, 0, *ws);
   detail::giveBackRings(c, 1, *ws);
   return result;

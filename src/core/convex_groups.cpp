@@ -170,21 +170,39 @@ void cutIntoGroups(std::vector<RingBox>& boxes, RingGroups& out) {
 
 }  // namespace
 
-bool boxOutsideConvex(const Box& box, const Grid& grid, const std::vector<IPoint>& convex,
-                      int convexOrientation) {
-  if (box.empty() || !box.finite || convex.size() > std::size_t(kMaxSides)) return false;
+BoxPlace placeBox(const Box& box, const Grid& grid, const std::vector<IPoint>& convex,
+                  int convexOrientation) {
+  if (box.empty() || !box.finite || convex.size() > std::size_t(kMaxSides)) {
+    return BoxPlace::Unknown;
+  }
   const std::optional<std::int64_t> x0 = grid.toUnits(box.minX, grid.origin.x),
                                     x1 = grid.toUnits(box.maxX, grid.origin.x),
                                     y0 = grid.toUnits(box.minY, grid.origin.y),
                                     y1 = grid.toUnits(box.maxY, grid.origin.y);
-  if (!x0 || !x1 || !y0 || !y1) return false;
-  const SideLines sides(convex, convexOrientation);
-  unsigned anyLeft = 0;  // the sides some corner lies strictly left of
-  for (const IPoint corner :
-       {IPoint{*x0, *y0}, IPoint{*x1, *y0}, IPoint{*x1, *y1}, IPoint{*x0, *y1}}) {
-    anyLeft |= sides.classify(corner).left;
+  if (!x0 || !x1 || !y0 || !y1) return BoxPlace::Unknown;
+  // Apart from C's own box (most contours around a ROI): the half-plane beyond C's extreme
+  // coordinate holds the box and no point inside C.
+  IPoint lo = convex[0], hi = convex[0];
+  for (const IPoint p : convex) {
+    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)};
+    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
   }
-  return anyLeft != sides.all();
+  if (*x1 <= lo.x || *x0 >= hi.x || *y1 <= lo.y || *y0 >= hi.y) return BoxPlace::Outside;
+  const SideLines sides(convex, convexOrientation);
+  const unsigned all = sides.all();
+  return withSideCount(sides, [&](auto k) {
+    // The sides some corner lies strictly left of, and those every corner does.
+    unsigned anyLeft = 0, allLeft = all;
+    for (const IPoint corner :
+         {IPoint{*x0, *y0}, IPoint{*x1, *y0}, IPoint{*x1, *y1}, IPoint{*x0, *y1}}) {
+      const unsigned left = sides.classify<k()>(corner).left;
+      anyLeft |= left;
+      allLeft &= left;
+    }
+    return anyLeft != all   ? BoxPlace::Outside
+           : allLeft == all ? BoxPlace::Inside
+                            : BoxPlace::Unknown;
+  });
 }
 
 bool groupRingsForConvex(const Rings& rings, const std::vector<IPoint>& convex,

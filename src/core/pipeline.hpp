@@ -441,15 +441,19 @@ struct Box {
 /// from; with a fixed grid no pass is made and `subjectBox` stays empty (nothing known).
 Grid resolveGrid(const Grid& grid, const Paths& subject, const Paths& clip, Box& subjectBox);
 
-/// True when every vertex of some paths lies in the closed outer half-plane of one side of the
-/// strictly convex ring `convex` (of orientation `convexOrientation`), decided from their box
-/// before they are snapped: then they fill nothing inside it, and their intersection with it is
-/// empty. Snapping is monotone, so the snapped box's corners are the box's corners snapped; the
-/// half-plane is convex, so it holds the box when it holds its corners. False when the box does
-/// not tell (empty, not finite, outside the grid's range: the snapping reports those) or C has
-/// more than kMaxSides sides. Constant time.
-bool boxOutsideConvex(const Box& box, const Grid& grid, const std::vector<IPoint>& convex,
-                      int convexOrientation);
+/// Where the vertices of some paths lie relative to a strictly convex ring C (of orientation
+/// `convexOrientation`), decided from their box before they are snapped. Snapping is monotone, so
+/// the snapped box's corners are the box's corners snapped; a half-plane is convex, so it holds
+/// the box when it holds its corners. Constant time.
+enum class BoxPlace {
+  Unknown,  ///< the box tells nothing: it meets C's boundary, or it is empty, not finite, outside
+            ///< the grid's range (the snapping reports those), or C has more than kMaxSides sides
+  Outside,  ///< every vertex in a closed half-plane that holds no point inside C (the outer one
+            ///< of a side, or one beyond C's extreme x or y): nothing they fill is in C
+  Inside,   ///< every vertex strictly inside C
+};
+BoxPlace placeBox(const Box& box, const Grid& grid, const std::vector<IPoint>& convex,
+                  int convexOrientation);
 
 /// The grids a fitted grid resolves to (grid.cpp; resolveGrid() and PreparedRegion use them).
 /// The power-of-two grid fitted to a box: the largest s = 2^e with s * side <= 2^31 - 8, the
@@ -488,9 +492,10 @@ void giveBackRings(SnappedOperand& snapped, int operand, Workspace& workspace);
 
 /// clip() on snapped operands (boolean_op.cpp): the convex fast path for an intersection with a
 /// convex operand, else the general path. On the general path the subject's rings are freed
-/// once read.
+/// once read. `subjectPlace`: where the subject lies relative to a convex clip (placeBox()).
 PolygonSet clipSnapped(ClipOp op, SnappedOperand& subject, const SnappedOperand& clip,
-                       const Grid& grid, const Limits& limits, Workspace& workspace);
+                       const Grid& grid, const Limits& limits, Workspace& workspace,
+                       BoxPlace subjectPlace = BoxPlace::Unknown);
 
 /// clipLines() on a snapped region (clip_lines.cpp): `edges` holds the polylines' edges from
 /// appendLineEdges() (the region's are appended), `firstEdge` where each polyline starts.

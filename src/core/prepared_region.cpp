@@ -99,13 +99,15 @@ PolygonSet PreparedRegion::clip(ClipOp op, const Paths& subject, FillRule subjec
     return roiclip::clip(op, subject, impl_->source, subjectRule, impl_->rule, impl_->options);
   }
   const detail::SnappedOperand& region = impl_->region;
-  if (op == ClipOp::Intersection && region.convex != 0 &&
-      detail::boxOutsideConvex(box, impl_->grid, region.rings[0], region.convex)) {
-    return {};  // as the free function: outside the convex ROI, unsnapped
-  }
+  const detail::BoxPlace place =
+      op == ClipOp::Intersection && region.convex != 0
+          ? detail::placeBox(box, impl_->grid, region.rings[0], region.convex)
+          : detail::BoxPlace::Unknown;
+  if (place == detail::BoxPlace::Outside) return {};  // as the free function, unsnapped
   const detail::WorkspaceLease ws(impl_->workspace);
   detail::SnappedOperand s = detail::snapOperand(subject, 0, subjectRule, impl_->grid, true, &*ws);
-  PolygonSet result = detail::clipSnapped(op, s, region, impl_->grid, impl_->options.limits, *ws);
+  PolygonSet result =
+      detail::clipSnapped(op, s, region, impl_->grid, impl_->options.limits, *ws, place);
   detail::giveBackRings(s, 0, *ws);
   return result;
 }
