@@ -49,22 +49,22 @@ inline bool straightThrough(IPoint a, IPoint b, IPoint c) {
 }
 
 // The straight-on vertices across the closing vertex of a ring whose other straight runs are
-// merged (snapPoints<true>()).
+// merged (snapPoints<true>()). A first vertex that goes takes the last one's place, and the last
+// place goes: the ring keeps its cyclic order without moving the rest.
 void mergeAcrossClose(std::vector<IPoint>& ring) {
-  std::size_t begin = 0;
   bool changed = true;
-  while (changed && ring.size() - begin >= 3) {
+  while (changed && ring.size() >= 3) {
     changed = false;
     const std::size_t n = ring.size();
-    if (straightThrough(ring[n - 2], ring[n - 1], ring[begin])) {
+    if (straightThrough(ring[n - 2], ring[n - 1], ring[0])) {
       ring.pop_back();
       changed = true;
-    } else if (straightThrough(ring[n - 1], ring[begin], ring[begin + 1])) {
-      ++begin;
+    } else if (straightThrough(ring[n - 1], ring[0], ring[1])) {
+      ring[0] = ring[n - 1];
+      ring.pop_back();
       changed = true;
     }
   }
-  ring.erase(ring.begin(), ring.begin() + std::ptrdiff_t(begin));
 }
 
 // Drops vertices where a closed ring goes straight on: pixel chains become a few long edges.
