@@ -201,6 +201,13 @@ cv::Mat renderTag(const std::string& family, int id, int* blackBorderCells) {
   return view.clone();
 }
 
+// Whether libapriltag's worker pool may run several threads (src/apriltag/CMakeLists.txt).
+#if defined(ROICLIP_APRILTAG_ONE_WORKER)
+constexpr bool kWorkerThreadsSafe = false;
+#else
+constexpr bool kWorkerThreadsSafe = true;
+#endif
+
 struct Detector::Impl {
   explicit Impl(DetectorOptions o) : options(std::move(o)) {
     for (const FamilyEntry* entry : parseFamilies(options.family)) {
@@ -210,7 +217,7 @@ struct Detector::Impl {
     if (!detector) throw Error("apriltag_detector_create failed");
     detector->quad_sigma = options.quadSigma;
     detector->refine_edges = options.refineEdges;
-    detector->nthreads = options.threads;
+    detector->nthreads = kWorkerThreadsSafe ? options.threads : 1;
     detector->decode_sharpening = options.decodeSharpening;
     for (const auto& family : families) {
       apriltag_detector_add_family_bits(detector.get(), family->get(), options.maxBitsCorrected);
@@ -224,6 +231,7 @@ struct Detector::Impl {
     // so few pixels anyway.
     DetectionReport report;
     report.quadDecimate = decimateBy;
+    report.threads = detector->nthreads;
     const int decimate = std::max(1, static_cast<int>(std::ceil(report.quadDecimate)));
     if (std::min(image.rows, image.cols) < 3 * decimate) return report;
 

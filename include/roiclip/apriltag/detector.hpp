@@ -118,7 +118,11 @@ struct DetectorOptions {
   /// Snap quad edges to strong gradients of the full-resolution image (recommended with
   /// quadDecimate > 1).
   bool refineEdges = true;
-  /// libapriltag worker threads for one detect() call (>= 1).
+  /// libapriltag worker threads for one detect() call (>= 1). Built against libapriltag before
+  /// 3.4.3 (Debian 12's 3.3.0), one worker runs whatever this asks: that worker pool can crash
+  /// with more than one thread (a worker reads a task while the detector moves the task array;
+  /// fixed upstream in AprilRobotics/apriltag#339). DetectionReport::threads tells which.
+  /// Detect several images at once with one Detector each (as `roiclip run --jobs` does).
   int threads = 1;
   /// Sharpening of the decoded payload image (libapriltag default 0.25).
   double decodeSharpening = 0.25;
@@ -153,6 +157,7 @@ struct DetectionReport {
   std::vector<Detection> rejected;  ///< decoded but over maxHamming or under minDecisionMargin
   float quadDecimate = 1.0f;        ///< the decimation of the pass whose detections these are
   int passes = 1;                   ///< libapriltag passes run (automatic decimation may add some)
+  int threads = 1;                  ///< libapriltag worker threads each pass ran with
 };
 
 /// Family names this build supports (those libapriltag 3.3 ships): tag36h11, tag25h9, tag16h5,
