@@ -11,6 +11,9 @@
 // the groups within C, and no two of these touch. Each group is then intersected alone, by the
 // sweep-free paths where they apply; the groups are found by recursive x-y cuts (as page
 // segmentation cuts a page into blocks).
+//
+// Before any of that, placeBox() places a subject by its bounding box alone, from the unsnapped
+// coordinates: outside C (nothing to snap) or strictly inside it.
 #include <algorithm>
 #include <optional>
 

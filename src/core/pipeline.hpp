@@ -430,7 +430,8 @@ struct Box {
   /// Every coordinate added is a finite integer below 2^51 in magnitude (false also when one is
   /// larger): then every power-of-two grid of scale 1 or more holds them all (resolveGrid()).
   bool integral = true;
-  /// No coordinate added is NaN or infinite: then every vertex of those paths lies in the box.
+  /// No coordinate added is NaN or infinite, so every vertex of those paths lies in the box
+  /// (false also when one reaches 2^51 in magnitude, where the pass does not tell them apart).
   bool finite = true;
   /// One pass over the coordinates (grid.cpp).
   void add(const Paths& paths);
