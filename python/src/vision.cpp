@@ -95,7 +95,8 @@ constexpr const char* kDetectorArgs =
     "family: tag family (see available_families()); quad_decimate: detect quads on an image "
     "decimated by this factor (>= 1), or 0 (the default) for automatic decimation, coarse to "
     "fine as in roiclip run; quad_sigma: Gaussian blur of the quad image (0 off); "
-    "refine_edges: snap quad edges to strong gradients; threads: libapriltag worker threads; "
+    "refine_edges: snap quad edges to strong gradients; threads: libapriltag worker threads "
+    "(one runs with libapriltag before 3.4.3, whose worker pool can crash with more); "
     "decode_sharpening: payload sharpening; max_bits_corrected: bit errors the decoder may "
     "correct (0..3). Raises InvalidInputError for an unknown family or out-of-range options.";
 
