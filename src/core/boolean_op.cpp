@@ -239,7 +239,7 @@ PolygonSet clip(ClipOp op, const Paths& subject, const Paths& clipPaths, FillRul
     c = detail::snapOperand(clipPaths, 1, clipRule, grid, true, &*ws);
     // A subject whose box lies outside a convex ROI (most contours of an image, for a tag's
     // ROI) leaves with nothing, unsnapped: its box has shown every vertex valid.
-    if (c.convex != 0) place = detail::placeBox(subjectBox, grid, c.rings[0], c.convex);
+    place = detail::placeBox(subjectBox, grid, c);
     if (place == detail::BoxPlace::Outside) {
       detail::giveBackRings(c, 1, *ws);
       return {};

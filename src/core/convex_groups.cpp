@@ -75,13 +75,15 @@ Place placeOf(const std::vector<IPoint>& ring, const RingBox& box, const SideLin
   inClosed = false;
   if (ring.size() < 3) return Place::Apart;  // a point or a segment: it fills nothing
   const unsigned all = sides.all();
-  const auto [boxLeft, boxRight] =
+  // Not SideLines::placeBox(): a box in a side's closed outer half-plane may hold a ring on C's
+  // boundary, whose inClosed its vertices tell below.
+  const SideLines::BoxSides corners =
       sides.classifyBox<kSides>({box.lo[0], box.lo[1]}, {box.hi[0], box.hi[1]});
-  if (boxLeft == all) {
+  if (corners.left == all) {
     inClosed = true;
     return Place::Inside;
   }
-  if (boxRight != 0) return Place::Apart;
+  if (corners.right != 0) return Place::Apart;
   unsigned anyLeft = 0, allLeft = all, anyOut = 0;
   bool vertexInC = false, edgeMeets = false;
   // The sides each vertex lies strictly right of; an edge between two vertices outside C meets
@@ -183,29 +185,21 @@ BoxPlace placeBox(const Box& box, const Grid& grid, const std::vector<IPoint>& c
                                     y0 = grid.toUnits(box.minY, grid.origin.y),
                                     y1 = grid.toUnits(box.maxY, grid.origin.y);
   if (!x0 || !x1 || !y0 || !y1) return BoxPlace::Unknown;
-  // Apart from C's own box (most contours around a ROI): the half-plane beyond C's extreme
-  // coordinate holds the box and no point inside C.
+  // Most subjects around a ROI lie apart from its box: decided before the side lines are made.
   IPoint lo = convex[0], hi = convex[0];
   for (const IPoint p : convex) {
     lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)};
     hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
   }
-  if (*x1 <= lo.x || *x0 >= hi.x || *y1 <= lo.y || *y0 >= hi.y) return BoxPlace::Outside;
+  if (boxesApart({*x0, *y0}, {*x1, *y1}, lo, hi)) return BoxPlace::Outside;
   const SideLines sides(convex, convexOrientation);
-  const unsigned all = sides.all();
   return withSideCount(sides, [&](auto k) {
-    // The sides some corner lies strictly left of, and those every corner does.
-    unsigned anyLeft = 0, allLeft = all;
-    for (const IPoint corner :
-         {IPoint{*x0, *y0}, IPoint{*x1, *y0}, IPoint{*x1, *y1}, IPoint{*x0, *y1}}) {
-      const unsigned left = sides.classify<k()>(corner).left;
-      anyLeft |= left;
-      allLeft &= left;
-    }
-    return anyLeft != all   ? BoxPlace::Outside
-           : allLeft == all ? BoxPlace::Inside
-                            : BoxPlace::Unknown;
+    return sides.placeBox<k()>(IPoint{*x0, *y0}, IPoint{*x1, *y1});
   });
+}
+
+BoxPlace placeBox(const Box& box, const Grid& grid, const SnappedOperand& clip) {
+  return clip.convex != 0 ? placeBox(box, grid, clip.rings[0], clip.convex) : BoxPlace::Unknown;
 }
 
 bool groupRingsForConvex(const Rings& rings, const std::vector<IPoint>& convex,

@@ -3,11 +3,13 @@
 // them at once (simple_convex.cpp and convex_groups.cpp).
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <type_traits>
 #include <utility>
 #include <vector>
 
+#include "pipeline.hpp"
 #include "predicates.hpp"
 
 namespace roiclip::detail {
@@ -26,6 +28,11 @@ struct CcwRing {
 /// The most sides SideLines takes (one bit each in a mask).
 constexpr int kMaxSides = 30;
 
+/// Whether the box [aLo, aHi] lies at or beyond an extreme x or y of the box [bLo, bHi].
+inline bool boxesApart(IPoint aLo, IPoint aHi, IPoint bLo, IPoint bHi) {
+  return aHi.x <= bLo.x || aLo.x >= bHi.x || aHi.y <= bLo.y || aLo.y >= bHi.y;
+}
+
 /// The side lines of a convex ring taken counter-clockwise, each as its direction and the cross
 /// product of its direction with its start, to classify points against all of them (orientInGrid()
 /// with what depends on the side alone taken once: two products and a comparison a side). At most
@@ -38,12 +45,16 @@ struct SideLines {
   IPoint dir[kMaxSides];
   std::int64_t at[kMaxSides];
   int m = 0;
-  SideLines(const std::vector<IPoint>& convex, int orientation) : m(int(convex.size())) {
+  IPoint lo, hi;  ///< the convex ring's bounding box
+  SideLines(const std::vector<IPoint>& convex, int orientation)
+      : m(int(convex.size())), lo(convex[0]), hi(convex[0]) {
     const CcwRing c{&convex, orientation < 0};
     for (int j = 0; j < m; ++j) {
       const IPoint a = c[j], b = c[(j + 1) % m];
       dir[j] = {b.x - a.x, b.y - a.y};
       at[j] = dir[j].x * a.y - dir[j].y * a.x;
+      lo = {std::min(lo.x, a.x), std::min(lo.y, a.y)};
+      hi = {std::max(hi.x, a.x), std::max(hi.y, a.y)};
     }
   }
   [[nodiscard]] unsigned all() const { return (1U << m) - 1; }
@@ -65,20 +76,34 @@ struct SideLines {
     return {left, zeros};
   }
   /// The sides that every corner of the box [lo, hi] lies strictly left of (all of them: the box
-  /// lies inside the convex ring, which is convex), and those every corner lies strictly right
-  /// of (the box lies outside that side's line). kSides as classify().
+  /// lies inside the convex ring, which is convex), those every corner lies strictly right of
+  /// (the box lies outside that side's line), and those some corner lies strictly left of (not
+  /// all of them: the box lies in a side's closed outer half-plane). kSides as classify().
   struct BoxSides {
-    unsigned left = 0, right = 0;
+    unsigned left = 0, right = 0, someLeft = 0;
   };
   template <int kSides = 0>
-  [[nodiscard]] BoxSides classifyBox(IPoint lo, IPoint hi) const {
-    BoxSides box{all(), all()};
-    for (const IPoint corner : {lo, IPoint{hi.x, lo.y}, hi, IPoint{lo.x, hi.y}}) {
+  [[nodiscard]] BoxSides classifyBox(IPoint boxLo, IPoint boxHi) const {
+    BoxSides box{all(), all(), 0};
+    for (const IPoint corner : {boxLo, IPoint{boxHi.x, boxLo.y}, boxHi, IPoint{boxLo.x, boxHi.y}}) {
       const auto [left, zeros] = classify<kSides>(corner);
       box.left &= left;
       box.right &= ~(left | zeros);
+      box.someLeft |= left;
     }
     return box;
+  }
+  /// Where the grid points of the box [lo, hi] lie (placeBox()): Outside when the box lies at or
+  /// beyond the ring's extreme x or y, or in the closed outer half-plane of a side (either way a
+  /// closed half-plane without a point inside the ring holds it); Inside when every corner lies
+  /// strictly inside the ring; else Unknown. kSides as classify().
+  template <int kSides = 0>
+  [[nodiscard]] BoxPlace placeBox(IPoint boxLo, IPoint boxHi) const {
+    if (boxesApart(boxLo, boxHi, lo, hi)) return BoxPlace::Outside;
+    const BoxSides box = classifyBox<kSides>(boxLo, boxHi);
+    return box.someLeft != all() ? BoxPlace::Outside
+           : box.left == all()   ? BoxPlace::Inside
+                                 : BoxPlace::Unknown;
   }
 };
 

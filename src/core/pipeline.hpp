@@ -455,6 +455,9 @@ enum class BoxPlace {
 };
 BoxPlace placeBox(const Box& box, const Grid& grid, const std::vector<IPoint>& convex,
                   int convexOrientation);
+struct SnappedOperand;
+/// The same against a snapped clip operand: Unknown unless it is one strictly convex ring.
+BoxPlace placeBox(const Box& box, const Grid& grid, const SnappedOperand& clip);
 
 /// The grids a fitted grid resolves to (grid.cpp; resolveGrid() and PreparedRegion use them).
 /// The power-of-two grid fitted to a box: the largest s = 2^e with s * side <= 2^31 - 8, the

@@ -99,10 +99,9 @@ PolygonSet PreparedRegion::clip(ClipOp op, const Paths& subject, FillRule subjec
     return roiclip::clip(op, subject, impl_->source, subjectRule, impl_->rule, impl_->options);
   }
   const detail::SnappedOperand& region = impl_->region;
-  const detail::BoxPlace place =
-      op == ClipOp::Intersection && region.convex != 0
-          ? detail::placeBox(box, impl_->grid, region.rings[0], region.convex)
-          : detail::BoxPlace::Unknown;
+  const detail::BoxPlace place = op == ClipOp::Intersection
+                                     ? detail::placeBox(box, impl_->grid, region)
+                                     : detail::BoxPlace::Unknown;
   if (place == detail::BoxPlace::Outside) return {};  // as the free function, unsnapped
   const detail::WorkspaceLease ws(impl_->workspace);
   detail::SnappedOperand s = detail::snapOperand(subject, 0, subjectRule, impl_->grid, true, &*ws);

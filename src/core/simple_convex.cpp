@@ -42,7 +42,8 @@ constexpr std::size_t kBoxFirstUpTo = 512;  // vertices
 // vertex on a side line outside C (on the line's extension: strictly right of another side) counts
 // as right of it; an edge from it crosses that line only there, outside the side. Returns the
 // sides some vertex lies strictly left of, and in `anyOn` the side lines some vertex lies on.
-// A ring of up to kBoxFirstUpTo vertices is first tested by its bounding box.
+// A ring of up to kBoxFirstUpTo vertices is first placed by its bounding box
+// (SideLines::placeBox()); outside C it returns 0 with the arrays unset.
 template <int kSides>
 unsigned classifyEach(const CcwRing& s, const SideLines& sides, WeilerScratch& w, unsigned& anyOn) {
   const std::size_t n = std::size_t(s.size());
@@ -59,12 +60,12 @@ unsigned classifyEach(const CcwRing& s, const SideLines& sides, WeilerScratch& w
       lo = {std::min(lo.x, points[i].x), std::min(lo.y, points[i].y)};
       hi = {std::max(hi.x, points[i].x), std::max(hi.y, points[i].y)};
     }
-    const auto box = sides.classifyBox<kSides>(lo, hi);
-    if (box.right != 0) return sides.all() & ~box.right;  // arrays left unset: nothing is in C
-    if (box.left == sides.all()) {
-      std::fill(left, left + n, box.left);
+    const BoxPlace place = sides.placeBox<kSides>(lo, hi);
+    if (place == BoxPlace::Outside) return 0;  // arrays left unset: nothing is in C
+    if (place == BoxPlace::Inside) {
+      std::fill(left, left + n, sides.all());
       std::fill(onLine, onLine + n, 0U);
-      return box.left;
+      return sides.all();
     }
   }
   unsigned anyLeft = 0, on = 0;
