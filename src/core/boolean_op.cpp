@@ -36,15 +36,18 @@ PolygonSet resolve(const std::vector<InputEdge>& edges, const std::vector<ExactE
 
 // Some rings AND one convex ring: the sweep-free paths where they apply, else the pre-clip and
 // stages 1 to 4. `budget` is what is left of Limits::maxCrossings; the sweep's crossings are
-// taken from it. `inClosed`, when known (groupRingsForConvex()), is ringsInsideConvex(rings).
+// taken from it. `inClosed`, when known (groupRingsForConvex()), is ringsInsideConvex(rings);
+// `known`, when not null, what the grouping learnt of each ring's vertices.
 PolygonSet intersectRings(const Rings& rings, FillRule rule, const SnappedOperand& convex,
                           const Grid& grid, std::uint64_t& budget, Workspace& ws,
-                          std::optional<bool> inClosed = std::nullopt) {
+                          std::optional<bool> inClosed = std::nullopt,
+                          const KnownSides* known = nullptr) {
   // One contour that does not touch itself (most contours): Weiler-Atherton, no sweep, when
   // its boundary crosses the convex ring's only transversally.
   PolygonSet direct;
-  if (rings.size() == 1 && intersectSimpleConvex(rings[0], rule, convex.rings[0], convex.convex,
-                                                 grid, ws.chains, ws.weiler, direct)) {
+  if (rings.size() == 1 &&
+      intersectSimpleConvex(rings[0], rule, convex.rings[0], convex.convex, grid, ws.chains,
+                            ws.weiler, direct, known != nullptr ? known[0] : KnownSides{})) {
     return direct;
   }
   // Several contours touching nothing: all inside the convex ring (a contour with its holes
@@ -56,7 +59,7 @@ PolygonSet intersectRings(const Rings& rings, FillRule rule, const SnappedOperan
     if (ringsAreSimple(rings, ws.chains)) {
       if (inside) return simpleRingsRegion(rings, rule, ws.chains, grid);
       if (intersectSimpleRingsConvex(rings, rule, convex.rings[0], convex.convex, grid, ws.chains,
-                                     ws.weiler, direct)) {
+                                     ws.weiler, direct, known)) {
         return direct;
       }
     }
@@ -130,20 +133,27 @@ PolygonSet intersectConvexRing(const SnappedOperand& other, const SnappedOperand
     std::vector<PolygonSet> parts;
     parts.reserve(groups.count());
     Rings group;
+    std::vector<KnownSides> known;
     for (std::size_t g = 0; g < groups.count(); ++g) {
       group.clear();
+      known.clear();
       for (std::size_t k = groups.groupStart[g]; k < groups.groupStart[g + 1]; ++k) {
         group.push_back(other.rings[std::size_t(groups.rings[k])]);
+        known.push_back(groups.sidesOf(std::size_t(groups.rings[k])));
       }
-      parts.push_back(
-          intersectRings(group, other.rule, convex, grid, budget, ws, groups.groupInClosed(g)));
+      parts.push_back(intersectRings(group, other.rule, convex, grid, budget, ws,
+                                     groups.groupInClosed(g), known.data()));
     }
     return mergeGroups(parts);
   }
   // One group of every ring, or no grouping.
-  const std::optional<bool> known =
-      grouped && groups.count() == 1 ? std::optional<bool>(groups.groupInClosed(0)) : std::nullopt;
-  return intersectRings(other.rings, other.rule, convex, grid, budget, ws, known);
+  if (grouped && groups.count() == 1) {
+    std::vector<KnownSides> known(other.rings.size());
+    for (std::size_t r = 0; r < known.size(); ++r) known[r] = groups.sidesOf(r);
+    return intersectRings(other.rings, other.rule, convex, grid, budget, ws,
+                          groups.groupInClosed(0), known.data());
+  }
+  return intersectRings(other.rings, other.rule, convex, grid, budget, ws);
 }
 
 // Stages 1 to 4 of the general path on snapped operands (`clip` null for simplify).

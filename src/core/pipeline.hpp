@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdint>
 #include <iterator>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -291,6 +292,16 @@ bool turnsOnce(const std::vector<IPoint>& ring);
 /// orientation, the path ending at the lexicographically smallest vertex.
 PolygonSet simpleRingRegion(const std::vector<IPoint>& ring, FillRule rule, const Grid& grid);
 
+/// What is known of one ring's vertices against the side lines of a strictly convex ring C
+/// (SideLines::classify(), bits as SideLines::Masks), so that Weiler-Atherton need not classify
+/// them again: nothing (the default), every vertex strictly inside C, or the masks of each vertex
+/// in the ring's stored order.
+struct KnownSides {
+  const unsigned* left = nullptr;    ///< per vertex: the sides it lies strictly left of, or null
+  const unsigned* onLine = nullptr;  ///< per vertex: the side lines it lies on (with `left`)
+  bool inside = false;               ///< every vertex lies strictly inside C
+};
+
 /// The intersection of a ring, filled under `rule`, with a strictly
 /// convex ring of orientation `convexOrientation` (convexOrientation()), by Weiler-Atherton on
 /// the two boundaries (simple_convex.cpp), into `out` exactly as stages 1 to 4 emit it. Returns
@@ -301,10 +312,11 @@ PolygonSet simpleRingRegion(const std::vector<IPoint>& ring, FillRule rule, cons
 /// crossing, a vertex of the simple ring on the convex one's boundary (a crossing or a touch
 /// there), or at a corner of it; no edge of the simple ring along a side's line or with its line
 /// through a corner it does not end at. O(n m + k log k).
+/// `known`: what is known of the ring's vertices against C's sides (groupRingsForConvex()).
 bool intersectSimpleConvex(const std::vector<IPoint>& ring, FillRule rule,
                            const std::vector<IPoint>& convex, int convexOrientation,
                            const Grid& grid, ChainScratch& chains, WeilerScratch& scratch,
-                           PolygonSet& out);
+                           PolygonSet& out, const KnownSides& known = {});
 
 /// The same for a set of rings: each simple and no two meeting. Leaves in `scratch` what
 /// simpleRingsRegion() needs (the chain below each ring's smallest vertex).
@@ -330,10 +342,11 @@ Path simpleRingPath(const std::vector<IPoint>& ring, LowestVertex lowest, bool h
 /// face. False (the general path) under intersectSimpleConvex()'s conditions, and when a ring
 /// that bounds the region runs around C, or walked rings along one outer ring's face are several
 /// and a hole inside C would need a point test to choose among them.
+/// `known`, when not null: what is known of each ring's vertices (as for one ring above).
 bool intersectSimpleRingsConvex(const Rings& rings, FillRule rule,
                                 const std::vector<IPoint>& convex, int convexOrientation,
                                 const Grid& grid, ChainScratch& chains, WeilerScratch& scratch,
-                                PolygonSet& out);
+                                PolygonSet& out, const KnownSides* known = nullptr);
 
 /// Whether every vertex of the rings lies inside the convex ring (orientation
 /// `convexOrientation`) or on its boundary: then so does everything they fill, and their
@@ -350,7 +363,21 @@ struct RingGroups {
   /// Per ring of the input: 1 when every vertex lies in C or on its boundary (as
   /// ringsInsideConvex() tells for a set of rings).
   std::vector<char> inClosed;
+  /// Per vertex of the input, ring after ring (from vertexStart[r]): the side masks of the
+  /// vertices of each ring whose vertices the grouping classified one by one (sidesOf()); left
+  /// uninitialised for the others.
+  std::unique_ptr<unsigned[]> left, onLine;
+  std::vector<std::size_t> vertexStart;
+  /// Per ring: kNothing, kInside (its bounding box lies strictly inside C) or kMasks.
+  enum : char { kNothing, kInside, kMasks };
+  std::vector<char> known;
   [[nodiscard]] std::size_t count() const { return groupStart.size() - 1; }
+  /// What the grouping learnt of ring r's vertices.
+  [[nodiscard]] KnownSides sidesOf(std::size_t r) const {
+    if (known[r] == kInside) return {nullptr, nullptr, true};
+    if (known[r] == kMasks) return {left.get() + vertexStart[r], onLine.get() + vertexStart[r]};
+    return {};
+  }
   /// Whether every ring of group g lies in C or on its boundary.
   [[nodiscard]] bool groupInClosed(std::size_t g) const {
     for (std::size_t k = groupStart[g]; k < groupStart[g + 1]; ++k) {

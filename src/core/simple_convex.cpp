@@ -82,10 +82,34 @@ unsigned classifyEach(const CcwRing& s, const SideLines& sides, WeilerScratch& w
   return anyLeft;
 }
 
+// classifyEach(), or what the grouping already knows of the vertices (`known`) put into place.
 unsigned classifyVertices(const CcwRing& s, const SideLines& sides, WeilerScratch& w,
-                          unsigned& anyOn) {
-  w.left.resize(std::size_t(s.size()));
-  w.onLine.resize(std::size_t(s.size()));
+                          unsigned& anyOn, const KnownSides& known) {
+  const std::size_t n = std::size_t(s.size());
+  w.left.resize(n);
+  w.onLine.resize(n);
+  if (known.inside) {
+    std::fill(w.left.begin(), w.left.end(), sides.all());
+    std::fill(w.onLine.begin(), w.onLine.end(), 0U);
+    anyOn = 0;
+    return sides.all();
+  }
+  if (known.left != nullptr) {
+    if (s.reversed) {
+      std::reverse_copy(known.left, known.left + n, w.left.begin());
+      std::reverse_copy(known.onLine, known.onLine + n, w.onLine.begin());
+    } else {
+      std::copy(known.left, known.left + n, w.left.begin());
+      std::copy(known.onLine, known.onLine + n, w.onLine.begin());
+    }
+    unsigned anyLeft = 0, on = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      anyLeft |= known.left[i];
+      on |= known.onLine[i];
+    }
+    anyOn = on;
+    return anyLeft;
+  }
   return withSideCount(sides, [&](auto k) { return classifyEach<k()>(s, sides, w, anyOn); });
 }
 
@@ -379,7 +403,7 @@ bool ringsInsideConvex(const Rings& rings, const std::vector<IPoint>& convex,
 bool intersectSimpleConvex(const std::vector<IPoint>& ring, FillRule rule,
                            const std::vector<IPoint>& convex, int convexOrientation,
                            const Grid& grid, ChainScratch& chains, WeilerScratch& w,
-                           PolygonSet& out) {
+                           PolygonSet& out, const KnownSides& known) {
   out = {};
   const int n = int(ring.size()), m = int(convex.size());
   // A ring that crosses itself with a loop (rotation index not +-1) leaves at once, before the
@@ -393,7 +417,7 @@ bool intersectSimpleConvex(const std::vector<IPoint>& ring, FillRule rule,
   unsigned anyOn = 0;
   // No vertex strictly left of some side: the ring lies in that side's closed outer half-plane,
   // and so does every point it winds around, simple or not. Nothing of it is in C.
-  if (classifyVertices(s, sides, w, anyOn) != all) return true;
+  if (classifyVertices(s, sides, w, anyOn, known) != all) return true;
   int probe = 0;  // a corner of C that is no vertex of S
   if (anyOn != 0) {
     const BoundaryTouch touch = boundaryVertices(w, all, std::size_t(n));
@@ -436,7 +460,7 @@ bool intersectSimpleConvex(const std::vector<IPoint>& ring, FillRule rule,
 bool intersectSimpleRingsConvex(const Rings& rings, FillRule rule,
                                 const std::vector<IPoint>& convex, int convexOrientation,
                                 const Grid& grid, ChainScratch& chains, WeilerScratch& w,
-                                PolygonSet& out) {
+                                PolygonSet& out, const KnownSides* known) {
   out = {};
   if (convex.size() > std::size_t(kMaxSides)) return false;
   nestSimpleRings(rings, rule, chains);
@@ -463,7 +487,8 @@ bool intersectSimpleRingsConvex(const Rings& rings, FillRule rule,
     if (!rn[r].inResult) continue;
     const CcwRing s = ringAt(int(r));
     unsigned anyOn = 0;
-    if (classifyVertices(s, sides, w, anyOn) != all) continue;  // outside a side line
+    const KnownSides ringKnown = known != nullptr ? known[r] : KnownSides{};
+    if (classifyVertices(s, sides, w, anyOn, ringKnown) != all) continue;  // outside a side line
     int probe = 0;  // a corner of C that is no vertex of the ring
     if (anyOn != 0) {
       const BoundaryTouch touch = boundaryVertices(w, all, std::size_t(s.size()));

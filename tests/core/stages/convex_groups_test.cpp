@@ -13,6 +13,7 @@
 #include <roiclip/error.hpp>
 #include <roiclip/roiclip.hpp>
 
+#include "convex_sides.hpp"
 #include "pipeline.hpp"
 #include "stage_support.hpp"
 #include "support/oracle.hpp"
@@ -132,7 +133,7 @@ TEST(StageConvexGroups, TheCrossingBudgetCountsEveryGroup) {
 // in some; the ROI a random convex hull. Coarse scenes make rings touch each other and the ROI.
 TEST(StageConvexGroups, RandomScenesMatchTheGeneralPath) {
   std::mt19937 rng(20261203);
-  int grouped = 0, inClosed = 0;
+  int grouped = 0, inClosed = 0, masksKept = 0, boxInside = 0;
   for (int trial = 0; trial < 240; ++trial) {
     const bool coarse = trial % 4 == 3;
     const double cell = coarse ? 12 : 100;
@@ -174,12 +175,25 @@ TEST(StageConvexGroups, RandomScenesMatchTheGeneralPath) {
       const detail::Rings rings = detail::snapRings(set, 0, grid);
       const detail::Rings c = detail::snapRings({roi}, 1, grid);
       ASSERT_EQ(g.groups.inClosed.size(), rings.size());
+      // What the grouping keeps of each ring's vertices for Weiler-Atherton (sidesOf()): the
+      // masks of every vertex as SideLines classifies it, or every vertex strictly inside C.
+      const detail::SideLines sides(c[0], detail::convexOrientation(c[0]));
       for (std::size_t r = 0; r < rings.size(); ++r) {
         if (rings[r].size() < 3) continue;  // apart: in no group
         inClosed += g.groups.inClosed[r] != 0 ? 1 : 0;
         EXPECT_EQ(g.groups.inClosed[r] != 0,
                   detail::ringsInsideConvex({rings[r]}, c[0], detail::convexOrientation(c[0])))
             << "trial " << trial << " ring " << r;
+        const detail::KnownSides known = g.groups.sidesOf(r);
+        masksKept += known.left != nullptr ? 1 : 0;
+        boxInside += known.inside ? 1 : 0;
+        for (std::size_t k = 0; k < rings[r].size() && (known.inside || known.left); ++k) {
+          const detail::SideLines::Masks m = sides.classify(rings[r][k]);
+          EXPECT_EQ(known.inside ? sides.all() : known.left[k], m.left)
+              << "trial " << trial << " ring " << r << " vertex " << k;
+          EXPECT_EQ(known.inside ? 0U : known.onLine[k], m.zeros)
+              << "trial " << trial << " ring " << r << " vertex " << k;
+        }
       }
     }
     for (FillRule rule : kRules) {
@@ -190,6 +204,8 @@ TEST(StageConvexGroups, RandomScenesMatchTheGeneralPath) {
   }
   EXPECT_GT(grouped, 150);  // the grouped path was taken in most scenes
   EXPECT_GT(inClosed, 500);
+  EXPECT_GT(masksKept, 1000);
+  EXPECT_GT(boxInside, 300);
 }
 
 // placeBox() decides from the unsnapped box what the snapped vertices show: every one in the
