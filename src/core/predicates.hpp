@@ -243,8 +243,15 @@ inline bool equalInBox(const XPoint& a, const XPoint& b) { return compareInBox(a
 inline bool lessInBox(const XPoint& a, const XPoint& b) { return compareInBox(a, b) < 0; }
 
 /// Sign of d1 x d2 for direction vectors of grid segments: +1 when d2 turns counter-clockwise
-/// from d1.
-inline int crossSign(IPoint d1, IPoint d2) { return signOf(i128(d1.x) * d2.y - i128(d1.y) * d2.x); }
+/// from d1. Grid points lie within 2^30 units of the origin, so each component is at most 2^31
+/// and each product at most 2^62 in magnitude: both fit int64, and comparing them (no
+/// subtraction, which could reach 2^63) gives the exact sign, as orientInGrid() does.
+inline int crossSign(IPoint d1, IPoint d2) {
+  static_assert(Grid::kMaxUnits <= (std::int64_t{1} << 30), "the bound above assumes 2^30");
+  const std::int64_t l = d1.x * d2.y;
+  const std::int64_t r = d1.y * d2.x;
+  return (l > r) - (l < r);
+}
 
 /// The point a + (num / den) * (b - a) on the line through grid points a, b; den > 0. Crossings
 /// on the grid come back with W == 1.

@@ -218,6 +218,23 @@ TEST(StageInput, Int64OrientationAgreesAtTheRangesEnds) {
   }
   EXPECT_GT(zero, 0);
   EXPECT_EQ(checked, 81LL * 81 * 81);
+  // crossSign() (int64) on the directions of segments between them, up to 2^31 a component.
+  long long crossed = 0, parallel = 0;
+  for (const IPoint a : points) {
+    for (const IPoint b : points) {
+      const IPoint d{b.x - a.x, b.y - a.y};
+      for (const IPoint e : {IPoint{2 * m, 2 * m}, IPoint{-2 * m, 2 * m - 1}, IPoint{2 * m, -1},
+                             IPoint{m, -2 * m}, IPoint{-1, 0}, d}) {
+        const __int128 cross = __int128(d.x) * e.y - __int128(d.y) * e.x;
+        ASSERT_EQ(detail::crossSign(d, e), (cross > 0) - (cross < 0))
+            << d.x << "," << d.y << " x " << e.x << "," << e.y;
+        ++crossed;
+        parallel += cross == 0;
+      }
+    }
+  }
+  EXPECT_GT(parallel, 81);
+  EXPECT_EQ(crossed, 81LL * 81 * 6);
 }
 
 // Straight runs are merged with the int64 test at the range's ends too: a ring along the range's
