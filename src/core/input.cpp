@@ -43,36 +43,47 @@ inline std::int64_t snap(double v, const Grid& grid, double originCoordinate, Ax
 inline bool straightOn(IPoint d, IPoint e) {
   return d.x * e.y == d.y * e.x && d.x * e.x > -(d.y * e.y);
 }
+// a, b and c lie on one line.
+inline bool collinear(IPoint a, IPoint b, IPoint c) {
+  return (b.x - a.x) * (c.y - b.y) == (b.y - a.y) * (c.x - b.x);
+}
 // b lies on the way from a to c.
 inline bool straightThrough(IPoint a, IPoint b, IPoint c) {
   return straightOn({b.x - a.x, b.y - a.y}, {c.x - b.x, c.y - b.y});
 }
 
-// The straight-on vertices across the closing vertex of a ring whose other straight runs are
-// merged (snapPoints<true>()). A first vertex that goes takes the last one's place, and the last
-// place goes: the ring keeps its cyclic order without moving the rest.
+// The straight-on and spike vertices (and a repeat of the first point) across the closing
+// vertex of a ring whose other ones are merged (snapPoints<true>()). A first vertex that goes
+// takes the last one's place, and the last place goes: the ring keeps its cyclic order without
+// moving the rest, and the line at the second vertex is the same, so no triple after it changes.
+// A spike out to the first vertex and back onto the last one leaves the second vertex a repeat
+// of the last: the first two go.
 void mergeAcrossClose(std::vector<IPoint>& ring) {
-  bool changed = true;
-  while (changed && ring.size() >= 3) {
-    changed = false;
+  while (ring.size() >= 3) {
     const std::size_t n = ring.size();
-    if (straightThrough(ring[n - 2], ring[n - 1], ring[0])) {
+    if (ring[n - 1] == ring[0] || collinear(ring[n - 2], ring[n - 1], ring[0])) {
       ring.pop_back();
-      changed = true;
-    } else if (straightThrough(ring[n - 1], ring[0], ring[1])) {
+    } else if (!collinear(ring[n - 1], ring[0], ring[1])) {
+      return;
+    } else if (ring[n - 1] == ring[1]) {
+      ring.erase(ring.begin(), ring.begin() + 2);
+    } else {
       ring[0] = ring[n - 1];
       ring.pop_back();
-      changed = true;
     }
   }
 }
 
-// Drops vertices where a closed ring goes straight on: pixel chains become a few long edges.
-// The covered region and every winding number are unchanged.
+// Drops vertices where a closed ring goes straight on or back along itself: pixel chains become
+// a few long edges, and spikes go. Every winding number off the ring is unchanged: what goes is
+// a closed path along one line, which winds around no point. A ring left with fewer than three
+// vertices encloses nothing (snapRingsInto() drops it); one with three or more has no three
+// consecutive vertices on a line, so none of its edges is zero-length or folds back.
 void mergeStraightRuns(std::vector<IPoint>& ring) {
   std::size_t kept = 0;
   for (const IPoint q : ring) {
-    while (kept >= 2 && straightThrough(ring[kept - 2], ring[kept - 1], q)) --kept;
+    while (kept >= 2 && collinear(ring[kept - 2], ring[kept - 1], q)) --kept;
+    if (kept >= 1 && ring[kept - 1] == q) continue;
     ring[kept++] = q;
   }
   ring.resize(kept);
@@ -122,8 +133,8 @@ struct FastSnap {
 #endif
 };
 
-// Snap one path: validated grid points with consecutive repeats removed; with `merge`, also
-// the vertices where it goes straight on.
+// Snap one path: validated grid points with consecutive repeats removed; with `kMerge` (a
+// closed ring), also the vertices where it goes straight on or back along itself.
 template <bool kMerge>
 void snapPoints(const Path& path, std::size_t count, std::size_t pathIndex, Operand label,
                 const Grid& grid, std::vector<IPoint>& out) {
@@ -144,11 +155,26 @@ void snapPoints(const Path& path, std::size_t count, std::size_t pathIndex, Oper
     if (q == last) continue;
     const IPoint step{q.x - last.x, q.y - last.y};
     last = q;
-    // With kMerge, the last point kept goes when the path goes straight on through it. No kept
-    // point is such a vertex, and whether one is depends only on the directions of its two
-    // edges, so the one before it never goes as well, and `along` keeps its direction.
-    if (kMerge && n >= 2 && straightOn(along, step)) {
-      kept[n - 1] = q;
+    // With kMerge, the last point kept goes when the path goes on along the line through it.
+    // Straight on: no kept point is such a vertex, and whether one is depends only on the
+    // directions of its two edges, so the one before it never goes as well, and `along` keeps
+    // its direction. Back along the last edge (a spike, the out-and-back trace of a one-pixel
+    // spur): the points before it may go too (mergeStraightRuns()' rule), and q itself when it
+    // is the point left last (the spike ends where it began).
+    if (kMerge && n >= 2 && along.x * step.y == along.y * step.x) {
+      if (along.x * step.x > -(along.y * step.y)) {
+        kept[n - 1] = q;
+        continue;
+      }
+      --n;
+      while (n >= 2 && collinear(kept[n - 2], kept[n - 1], q)) --n;
+      if (kept[n - 1] == q) {
+        last = q;
+      } else {
+        kept[n++] = q;
+      }
+      along = n >= 2 ? IPoint{kept[n - 1].x - kept[n - 2].x, kept[n - 1].y - kept[n - 2].y}
+                     : IPoint{0, 0};
       continue;
     }
     along = step;
@@ -214,7 +240,7 @@ void snapRingsInto(const Paths& paths, int operand, const Grid& grid, Rings& rin
   for (std::size_t p = 0; p < paths.size(); ++p) {
     if (kept == rings.size()) rings.emplace_back();
     snapRing(paths[p], p, operand == 0 ? Operand::Subject : Operand::Clip, grid, rings[kept]);
-    if (rings[kept].size() >= 2) ++kept;  // a point encloses nothing: its array is reused
+    if (rings[kept].size() >= 3) ++kept;  // a point or a line encloses nothing: its array is reused
   }
   rings.resize(kept);
 }

@@ -71,9 +71,13 @@ class ChainSweep {
   bool run() {
     if (!splitChains()) return false;
     const std::vector<ChainEvent>& events = s_.events;
+    // Two turning vertices at one point (contours touching at a pixel corner, most often), found
+    // before the sweep runs up to them.
+    for (std::size_t e = 1; e < events.size(); ++e) {
+      if (events[e - 1].key == events[e].key) return false;
+    }
     for (std::size_t e = 0; e < events.size(); ++e) {
       const ChainEvent& x = events[e];
-      if (e > 0 && events[e - 1].key == x.key) return false;  // two turning vertices at one point
       const IPoint p = frame_.point(x.key);
       if (!s_.chains[std::size_t(x.chain)].started()) {
         if (!insertPair(x.chain, x.pair, p)) return false;
