@@ -271,18 +271,27 @@ class Sweep {
     return compareCachedInBox(top().fx, p.fx) == 0 && equalInBox(topPoint(), p);
   }
 
-  bool nextPoint(XPoint& p) const {
+  // The next event point; pointKey_ is its start key when the next start lies there (the starts
+  // at p are then the ones with that key), else a key no start has.
+  bool nextPoint(XPoint& p) {
     const bool hasStart = cursor_ < starts_.size();
+    pointKey_ = kNoStartKey;
     if (!hasStart && queue_.empty()) return false;
     if (!hasStart) {
       p = topPoint();
-    } else if (queue_.empty()) {
-      p = XPoint(frame_.point(starts_[cursor_].key));
-    } else {
-      const XPoint a(frame_.point(starts_[cursor_].key));
-      const XPoint t = topPoint();
-      p = lessInBox(t, a) ? t : a;
+      return true;
     }
+    const std::uint64_t key = starts_[cursor_].key;
+    const XPoint a(frame_.point(key));
+    if (!queue_.empty()) {
+      const XPoint t = topPoint();
+      if (lessInBox(t, a)) {
+        p = t;
+        return true;
+      }
+    }
+    p = a;
+    pointKey_ = key;
     return true;
   }
 
@@ -322,11 +331,13 @@ class Sweep {
   // and another one known to pass through p (no orientation test needed for it), else -1.
   std::pair<int, int> takeEventsAt(const XPoint& p) {
     int locator = -1, known = -1;
-    while (cursor_ < starts_.size() && atGridPoint(p, frame_.point(starts_[cursor_].key))) {
+    while (cursor_ < starts_.size() && starts_[cursor_].key == pointKey_) {
       const SweepStart& ev = starts_[cursor_];
+      // An end start lies at its piece's right end, which never changes: a piece still in the
+      // status there ends at p.
       if (!ev.end) {
         starting_.push_back(ev.piece);
-      } else if (pieces_[ev.piece].node != nullptr && endsAt(pieces_[ev.piece], p)) {
+      } else if (pieces_[ev.piece].node != nullptr) {
         locator = ev.piece;
       }
       ++cursor_;
@@ -571,6 +582,9 @@ class Sweep {
   std::vector<SweepStart>& starts_;
   const StartFrame frame_;  // the grid range's corner
   std::size_t cursor_ = 0;
+  // StartFrame keys are below 2^63 (two differences below 2^31): this one is no start's.
+  static constexpr std::uint64_t kNoStartKey = ~std::uint64_t{0};
+  std::uint64_t pointKey_ = kNoStartKey;
   std::vector<SweepEvent>& queue_;
   std::vector<ExactCoords>& eventPoints_;
   std::vector<int>& freeEventPoints_;

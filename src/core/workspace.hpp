@@ -93,7 +93,11 @@ struct ChainNode {
   /// The ring index one step along the chain from i, and one step back.
   [[nodiscard]] int after(int i) const { return wrap(i + step); }
   [[nodiscard]] int before(int i) const { return wrap(i - step); }
-  [[nodiscard]] int wrap(int i) const { return i == size ? 0 : i < 0 ? size - 1 : i; }
+  /// i in [-1, size]: one test on the path a chain takes at all but one of its steps.
+  [[nodiscard]] int wrap(int i) const {
+    if (__builtin_expect(unsigned(i) < unsigned(size), 1)) return i;
+    return i < 0 ? size - 1 : 0;
+  }
   [[nodiscard]] IPoint start(ChainCursor c) const { return points[before(c.j)]; }
   [[nodiscard]] IPoint end(ChainCursor c) const { return points[c.j]; }
   /// The next edge's cursor.
