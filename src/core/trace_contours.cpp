@@ -77,23 +77,6 @@ bool inSectorCcw(IPoint a, IPoint b, IPoint c) {
   }
 }
 
-// Compressed rows: for each vertex, the result pieces whose `end(piece)` is that vertex.
-template <class End>
-void buildRows(const Arrangement& arrangement, int vertexCount, End end, std::vector<int>& first,
-               std::vector<int>& list, std::vector<int>& next) {
-  const auto& sides = arrangement.sides;
-  first.assign(std::size_t(vertexCount) + 1, 0);
-  for (std::size_t e = 0; e < sides.size(); ++e) {
-    if (sides[e] != Side::None) ++first[std::size_t(end(int(e))) + 1];
-  }
-  for (int v = 0; v < vertexCount; ++v) first[std::size_t(v) + 1] += first[std::size_t(v)];
-  list.resize(std::size_t(first[std::size_t(vertexCount)]));
-  next.assign(first.begin(), first.end() - 1);
-  for (std::size_t e = 0; e < sides.size(); ++e) {
-    if (sides[e] != Side::None) list[std::size_t(next[std::size_t(end(int(e)))]++)] = int(e);
-  }
-}
-
 }  // namespace
 
 Contours traceContours(const Arrangement& arrangement) {
@@ -108,35 +91,68 @@ Contours traceContours(const Arrangement& arrangement, TraceScratch& scratch) {
   auto from = [&](int e) { return sides[e] == Side::Above ? pieces[e].left : pieces[e].right; };
   auto to = [&](int e) { return sides[e] == Side::Above ? pieces[e].right : pieces[e].left; };
 
-  std::vector<int>& outFirst = scratch.outFirst;
-  std::vector<int>& outgoing = scratch.outgoing;
-  std::vector<int>& inFirst = scratch.inFirst;
-  std::vector<int>& incoming = scratch.incoming;
-  buildRows(arrangement, vertexCount, from, outFirst, outgoing, scratch.next);
-  buildRows(arrangement, vertexCount, to, inFirst, incoming, scratch.next);
-
+  // The result pieces leaving each vertex, as a list through outNext from outHead[v], and how
+  // many leave less how many arrive (0 everywhere on a balanced boundary).
+  std::vector<int>& outHead = scratch.outHead;
+  std::vector<int>& outNext = scratch.outNext;
+  std::vector<int>& balance = scratch.balance;
+  outHead.assign(std::size_t(vertexCount), -1);
+  balance.assign(std::size_t(vertexCount), 0);
+  outNext.resize(pieces.size());
+  for (std::size_t e = 0; e < pieces.size(); ++e) {
+    if (sides[e] == Side::None) continue;
+    const int v = from(int(e));
+    outNext[e] = outHead[std::size_t(v)];
+    outHead[std::size_t(v)] = int(e);
+    ++balance[std::size_t(v)];
+  }
   // Arriving at a vertex along a piece, the walk goes on along the outgoing piece next to it
   // clockwise: both bound the same filled sector, so rings that share a vertex touch there
   // without crossing. Around a vertex incoming and outgoing pieces alternate (each has the
-  // filled side on its left), so this pairs them one to one.
+  // filled side on its left), so this pairs them one to one. Where one piece leaves, it is the
+  // one; the pieces arriving where several leave are listed (inHead, inNext) for
+  // pairAtSharedVertex(), which those vertices (`shared`) get once every piece is listed.
   std::vector<int>& pairOut = scratch.pairOut;
+  std::vector<int>& inHead = scratch.inHead;
+  std::vector<int>& inNext = scratch.inNext;
+  std::vector<int>& shared = scratch.shared;
   pairOut.assign(pieces.size(), -1);
-  std::size_t sharedVertices = 0;
-  std::vector<Ray> rays;
-  for (int v = 0; v < vertexCount; ++v) {
-    const int outs = outFirst[v + 1] - outFirst[v];
-    if (outs != inFirst[v + 1] - inFirst[v]) {
+  inHead.assign(std::size_t(vertexCount), -1);
+  inNext.resize(pieces.size());
+  shared.clear();
+  for (std::size_t e = 0; e < pieces.size(); ++e) {
+    if (sides[e] == Side::None) continue;
+    const int w = to(int(e));
+    const int out = outHead[std::size_t(w)];
+    if (out < 0 || --balance[std::size_t(w)] < 0) {
       throw InternalError("traceContours: result boundary is not balanced at a vertex");
     }
-    if (outs == 0) continue;
-    if (outs == 1) {
-      pairOut[std::size_t(incoming[std::size_t(inFirst[v])])] = outgoing[std::size_t(outFirst[v])];
+    if (outNext[std::size_t(out)] < 0) {
+      pairOut[e] = out;
       continue;
     }
-    ++sharedVertices;
-    pairAtSharedVertex(pieces, v, &outgoing[std::size_t(outFirst[v])],
-                       &incoming[std::size_t(inFirst[v])], outs, rays, pairOut);
+    if (inHead[std::size_t(w)] < 0) shared.push_back(w);
+    inNext[e] = inHead[std::size_t(w)];
+    inHead[std::size_t(w)] = int(e);
   }
+  // A vertex where more pieces leave than arrive is left with a balance above 0.
+  for (const int b : balance) {
+    if (b != 0) throw InternalError("traceContours: result boundary is not balanced at a vertex");
+  }
+  std::vector<int>& outs = scratch.outs;
+  std::vector<int>& ins = scratch.ins;
+  std::vector<Ray> rays;
+  for (const int v : shared) {
+    outs.clear();
+    ins.clear();
+    for (int e = outHead[std::size_t(v)]; e >= 0; e = outNext[std::size_t(e)]) outs.push_back(e);
+    for (int e = inHead[std::size_t(v)]; e >= 0; e = inNext[std::size_t(e)]) ins.push_back(e);
+    if (outs.size() != ins.size()) {
+      throw InternalError("traceContours: result boundary is not balanced at a vertex");
+    }
+    pairAtSharedVertex(pieces, v, outs.data(), ins.data(), int(outs.size()), rays, pairOut);
+  }
+  const std::size_t sharedVertices = shared.size();
   std::vector<char>& used = scratch.used;
   used.assign(pieces.size(), 0);
 
@@ -185,7 +201,7 @@ Contours traceContours(const Arrangement& arrangement, TraceScratch& scratch) {
           // or another part touching this ring's edge must find a vertex of this ring at the
           // touch point, or after rounding to doubles it may cross the edge. The smallest
           // vertex is never straight-on.
-          if (outFirst[v + 1] - outFirst[v] > 1 ||
+          if (outNext[std::size_t(outHead[std::size_t(v)])] >= 0 ||
               crossSign(pieces[in].direction(), pieces[out].direction()) != 0) {
             if (v < minVertex) {
               minVertex = v;

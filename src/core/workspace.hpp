@@ -289,15 +289,16 @@ struct ClipVertex {
 /// pieces leaving and arriving, the pairing, and the walk. On small calls (W4: 10,000 contours of
 /// ~20 vertices) their allocations cost more than the tracing.
 struct TraceScratch {
-  std::vector<int> outFirst, outgoing, inFirst, incoming, next, pairOut, onStack, stackV, stackE;
+  std::vector<int> outHead, outNext, balance, inHead, inNext, shared, outs, ins, pairOut, onStack,
+      stackV, stackE;
   std::vector<char> used;
   /// Storage lent to the traced contours of a call (not a working array: not in forEach()).
   Contours contours;
   /// Every array, for recycleAll() / release().
   template <class F>
   void forEach(F f) {
-    for (std::vector<int>* v :
-         {&outFirst, &outgoing, &inFirst, &incoming, &next, &pairOut, &onStack, &stackV, &stackE}) {
+    for (std::vector<int>* v : {&outHead, &outNext, &balance, &inHead, &inNext, &shared, &outs,
+                                &ins, &pairOut, &onStack, &stackV, &stackE}) {
       f(*v);
     }
     f(used);
