@@ -67,7 +67,7 @@ PolygonSet intersectRings(const Rings& rings, FillRule rule, const SnappedOperan
   BooleanSpec spec;
   spec.subjectRule = rule;
   spec.maxCrossings = budget;
-  preclipConvex(rings, convex.rings[0], convex.convex, ws, ws.edges, ws.clipped);
+  preclipConvex(rings, convex.rings[0], convex.convex, ws, ws.edges, ws.clipped, known);
   std::uint64_t found = 0;
   PolygonSet result = resolve(ws.edges, ws.clipped, spec, grid, ws, &found);
   budget -= found;  // the sweep throws before it finds more than the budget

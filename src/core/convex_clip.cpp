@@ -168,7 +168,7 @@ class RingClipper {
     if (sideCount_ <= std::size_t(kMaxSides)) lines_.emplace(convexRing, orientation);
   }
 
-  void clip(const std::vector<IPoint>& ring) {
+  void clip(const std::vector<IPoint>& ring, const KnownSides& known) {
     const std::size_t n = ring.size();
     if (n > kInlineCodes && n > heapCapacity_) {
       heapCodes_.reset(new std::uint64_t[n]);  // written before read: not zeroed
@@ -176,7 +176,18 @@ class RingClipper {
     }
     codes_ = n > kInlineCodes ? heapCodes_.get() : inlineCodes_.data();
     std::uint64_t strictlyIn = 0;  // the sides some vertex lies strictly inside of
-    if (lines_) {
+    if (known.inside) {            // every vertex strictly inside C
+      std::fill_n(codes_, n, 0);
+      strictlyIn = allSides_;
+    } else if (known.left != nullptr && lines_) {  // the grouping's masks, SideLines's order
+      const unsigned all = lines_->all();
+      unsigned in = 0;
+      for (std::size_t i = 0; i < n; ++i) {
+        codes_[i] = all & ~(known.left[i] | known.onLine[i]);
+        in |= known.left[i];
+      }
+      strictlyIn = in;
+    } else if (lines_) {
       // Up to kMaxSides sides: SideLines's test, its loop over the sides unrolled for a quad
       // (W2-10k even-odd: -2.9% of the call).
       const unsigned all = lines_->all();
@@ -369,8 +380,8 @@ void preclipConvex(const Rings& rings, const std::vector<IPoint>& convexRing,
 }
 
 void preclipConvex(const Rings& rings, const std::vector<IPoint>& convexRing, int orientation,
-                   Workspace& workspace, std::vector<InputEdge>& edges,
-                   std::vector<ExactEdge>& out) {
+                   Workspace& workspace, std::vector<InputEdge>& edges, std::vector<ExactEdge>& out,
+                   const KnownSides* known) {
   workspace.generalPathUsed = true;
   if (orientation == 0) throw InternalError("preclipConvex: clip ring is not convex");
   // Reserved up front for every vertex when that is large: at 100k vertices growth by doubling
@@ -385,7 +396,9 @@ void preclipConvex(const Rings& rings, const std::vector<IPoint>& convexRing, in
   out.clear();
   if (convexRing.size() <= kMaxCodedSides) {
     RingClipper clipper(convexRing, orientation, workspace, edges, out);
-    for (const std::vector<IPoint>& ring : rings) clipper.clip(ring);
+    for (std::size_t r = 0; r < rings.size(); ++r) {
+      clipper.clip(rings[r], known != nullptr ? known[r] : KnownSides{});
+    }
   } else {  // a convex ring of many sides: every ring clipped whole
     const std::vector<IPoint> clipRing = leftTurning(convexRing, orientation);
     for (const std::vector<IPoint>& ring : rings) {

@@ -407,10 +407,12 @@ int convexOrientation(const std::vector<IPoint>& ring);
 /// input edges lying in the convex ring as they are in `edges`, the clipped ones in `out` (both
 /// cleared first). Every point of `rings` and `convexRing` lies within the grid's range
 /// (orientInGrid()), as snapRings() makes them.
-/// `orientation` is convexOrientation(convexRing), computed once by the caller.
+/// `orientation` is convexOrientation(convexRing), computed once by the caller. `known`, when
+/// not null, holds for each ring what the grouping learnt of its vertices against the convex
+/// ring's sides (RingGroups::sidesOf()): those masks are taken instead of classifying again.
 void preclipConvex(const Rings& rings, const std::vector<IPoint>& convexRing, int orientation,
-                   Workspace& workspace, std::vector<InputEdge>& edges,
-                   std::vector<ExactEdge>& out);
+                   Workspace& workspace, std::vector<InputEdge>& edges, std::vector<ExactEdge>& out,
+                   const KnownSides* known = nullptr);
 /// The same on the calling thread's workspace, computing the orientation, every edge in `out`.
 void preclipConvex(const Rings& rings, const std::vector<IPoint>& convexRing,
                    std::vector<ExactEdge>& out);
