@@ -102,26 +102,11 @@ Place placeOf(const std::vector<IPoint>& ring, const RingBox& box, const SideLin
     }
   };
   // Every vertex lies strictly left of the sides that every corner of the ring's box lies
-  // strictly left of: only the other sides (mostly one or two of a hull's) are asked per vertex.
-  const unsigned boxLeft = corners.left;
-  IPoint askDir[kMaxSides];
-  std::int64_t askAt[kMaxSides];
-  unsigned askBit[kMaxSides];
-  int asked = 0;
-  for (int j = 0; j < sides.m; ++j) {
-    if ((boxLeft >> j & 1U) != 0) continue;
-    askDir[asked] = sides.dir[j];
-    askAt[asked] = sides.at[j];
-    askBit[asked++] = 1U << j;
-  }
+  // strictly left of (a half-plane is convex): only the other sides are asked per vertex.
+  const SideLines::OtherSides asked = sides.otherThan(corners.left);
   for (std::size_t k = 0, n = ring.size(); k < n; ++k) {
     const IPoint p = ring[k];
-    unsigned left = boxLeft, zeros = 0;
-    for (int i = 0; i < asked; ++i) {  // SideLines::classify() over the sides asked
-      const std::int64_t v = askDir[i].x * p.y - askDir[i].y * p.x;
-      left |= v > askAt[i] ? askBit[i] : 0U;
-      zeros |= v == askAt[i] ? askBit[i] : 0U;
-    }
+    const auto [left, zeros] = asked.classify(p);
     leftOut[k] = left;
     onLineOut[k] = zeros;
     anyLeft |= left;

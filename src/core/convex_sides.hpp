@@ -75,6 +75,36 @@ struct SideLines {
     }
     return {left, zeros};
   }
+  /// classify() for points known to lie strictly left of the sides in `strictlyLeft` (the
+  /// vertices of a ring whose bounding box does): only the other sides are asked, mostly one or
+  /// two of a hull's; the known ones come back set in `left`.
+  struct OtherSides {
+    IPoint dir[kMaxSides];
+    std::int64_t at[kMaxSides];
+    unsigned bit[kMaxSides];
+    int count = 0;
+    unsigned known = 0;
+    [[nodiscard]] Masks classify(IPoint p) const {
+      unsigned left = known, zeros = 0;
+      for (int i = 0; i < count; ++i) {
+        const std::int64_t v = dir[i].x * p.y - dir[i].y * p.x;
+        left |= v > at[i] ? bit[i] : 0U;
+        zeros |= v == at[i] ? bit[i] : 0U;
+      }
+      return {left, zeros};
+    }
+  };
+  [[nodiscard]] OtherSides otherThan(unsigned strictlyLeft) const {
+    OtherSides o;
+    o.known = strictlyLeft;
+    for (int j = 0; j < m; ++j) {
+      if ((strictlyLeft >> j & 1U) != 0) continue;
+      o.dir[o.count] = dir[j];
+      o.at[o.count] = at[j];
+      o.bit[o.count++] = 1U << j;
+    }
+    return o;
+  }
   /// The sides that every corner of the box [lo, hi] lies strictly left of (all of them: the box
   /// lies inside the convex ring, which is convex), those every corner lies strictly right of
   /// (the box lies outside that side's line), and those some corner lies strictly left of (not
