@@ -135,10 +135,8 @@ Contours traceContours(const Arrangement& arrangement, TraceScratch& scratch) {
     inNext[e] = inHead[std::size_t(w)];
     inHead[std::size_t(w)] = int(e);
   }
-  // A vertex where more pieces leave than arrive is left with a balance above 0.
-  for (const int b : balance) {
-    if (b != 0) throw InternalError("traceContours: result boundary is not balanced at a vertex");
-  }
+  // Every balance is now at least 0, and they sum to 0 (each piece leaves one vertex and
+  // arrives at one): so every one is 0, and the boundary is balanced.
   std::vector<int>& outs = scratch.outs;
   std::vector<int>& ins = scratch.ins;
   std::vector<Ray> rays;
@@ -153,13 +151,15 @@ Contours traceContours(const Arrangement& arrangement, TraceScratch& scratch) {
     pairAtSharedVertex(pieces, v, outs.data(), ins.data(), int(outs.size()), rays, pairOut);
   }
   const std::size_t sharedVertices = shared.size();
-  std::vector<char>& used = scratch.used;
-  used.assign(pieces.size(), 0);
 
   Contours result = std::move(scratch.contours);  // the kept capacity (resolve() gives it back)
   result.rings.clear();
   result.vertices.clear();
-  result.ringOfPiece.assign(pieces.size(), -1);
+  // Each result piece's ring; kOnWalk while the walk holds it; -1 for pieces not yet walked
+  // (and for the pieces that bound nothing).
+  constexpr int kOnWalk = -2;
+  std::vector<int>& ringOf = result.ringOfPiece;
+  ringOf.assign(pieces.size(), -1);
   result.sharedVertices = sharedVertices;
   // At most one vertex per piece (a ring keeps a piece's start or drops it): the array never
   // grows while rings point into it.
@@ -172,14 +172,14 @@ Contours traceContours(const Arrangement& arrangement, TraceScratch& scratch) {
   stackV.reserve(pieces.size() + 1);
   stackE.reserve(pieces.size());
   for (std::size_t start = 0; start < pieces.size(); ++start) {
-    if (sides[start] == Side::None || used[start]) continue;
+    if (sides[start] == Side::None || ringOf[start] != -1) continue;
     const int v0 = from(int(start));
     stackV.assign(1, v0);
     stackE.clear();
     onStack[v0] = 0;
     int e = int(start);
     for (;;) {
-      used[std::size_t(e)] = 1;
+      ringOf[std::size_t(e)] = kOnWalk;
       const int w = to(e);
       stackE.push_back(e);
       if (onStack[w] < 0) {
@@ -193,10 +193,12 @@ Contours traceContours(const Arrangement& arrangement, TraceScratch& scratch) {
         const std::size_t firstVertex = result.vertices.size();
         int minVertex = stackV[k];
         std::size_t minAt = 0, minKeptAt = firstVertex;
+        const int ringIndex = int(result.rings.size());
+        int in = stackE[k + n - 1];
         for (std::size_t i = 0; i < n; ++i) {
           const int v = stackV[k + i];
-          const int in = stackE[k + (i + n - 1) % n];
           const int out = stackE[k + i];
+          ringOf[std::size_t(out)] = ringIndex;
           // A straight-on vertex is dropped unless other result pieces meet there too: a hole
           // or another part touching this ring's edge must find a vertex of this ring at the
           // touch point, or after rounding to doubles it may cross the edge. The smallest
@@ -210,6 +212,7 @@ Contours traceContours(const Arrangement& arrangement, TraceScratch& scratch) {
             }
             result.vertices.push_back(v);
           }
+          in = out;
         }
         // The ring starts where its reference piece (the lower of the two at its smallest
         // vertex) comes from, whichever piece the walk began with: at the smallest vertex when
@@ -228,15 +231,13 @@ Contours traceContours(const Arrangement& arrangement, TraceScratch& scratch) {
         ring.belowPiece = pieces[std::size_t(ring.referencePiece)].below;
         ring.hole = sides[ring.referencePiece] == Side::Below;
         if (ring.vertices.size() < 3) throw InternalError("traceContours: degenerate ring");
-        for (std::size_t i = 0; i < n; ++i)
-          result.ringOfPiece[stackE[k + i]] = int(result.rings.size());
         result.rings.push_back(std::move(ring));
         for (std::size_t i = k + 1; i < stackV.size(); ++i) onStack[stackV[i]] = -1;
         stackV.resize(k + 1);
         stackE.resize(k);
       }
       const int nextPiece = pairOut[std::size_t(e)];
-      if (nextPiece < 0 || used[std::size_t(nextPiece)]) {
+      if (nextPiece < 0 || ringOf[std::size_t(nextPiece)] != -1) {
         if (stackV.size() == 1) break;  // back at the start, every piece of this walk used
         throw InternalError("traceContours: result boundary is not balanced at a vertex");
       }

@@ -291,7 +291,6 @@ struct ClipVertex {
 struct TraceScratch {
   std::vector<int> outHead, outNext, balance, inHead, inNext, shared, outs, ins, pairOut, onStack,
       stackV, stackE;
-  std::vector<char> used;
   /// Storage lent to the traced contours of a call (not a working array: not in forEach()).
   Contours contours;
   /// Every array, for recycleAll() / release().
@@ -301,7 +300,6 @@ struct TraceScratch {
                                 &ins, &pairOut, &onStack, &stackV, &stackE}) {
       f(*v);
     }
-    f(used);
   }
   /// Frees every array when together they hold more than `bytes`: the peak of a large call is
   /// in nesting, after tracing, so large tracing arrays are not kept through it; small calls

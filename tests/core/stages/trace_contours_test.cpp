@@ -74,5 +74,25 @@ TEST(StageTraceContours, VerticesWhereARingGoesStraightOnAreRemoved) {
   EXPECT_EQ(d.rings[0].vertices.size(), 6u);  // (0,0) (15,0) (15,5) (10,5) (10,10) (0,10)
 }
 
+TEST(StageTraceContours, AnUnbalancedBoundaryIsAnInternalError) {
+  // Each piece's filled side decides where it leaves and arrives. Flipping one piece, or
+  // dropping it, leaves vertices where more pieces leave than arrive and others where fewer do:
+  // tracing must refuse, whichever piece it is, not loop or return a broken ring.
+  const Paths annulus = {{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {{2, 2}, {8, 2}, {8, 8}, {2, 8}}};
+  const detail::Arrangement a =
+      stages::arrange(annulus, nullptr, stages::simplifyWith(FillRule::EvenOdd));
+  ASSERT_EQ(detail::traceContours(a).rings.size(), 2u);
+  for (std::size_t e = 0; e < a.pieces.size(); ++e) {
+    if (a.sides[e] == detail::Side::None) continue;
+    detail::Arrangement flipped = a;
+    flipped.sides[e] =
+        a.sides[e] == detail::Side::Above ? detail::Side::Below : detail::Side::Above;
+    EXPECT_THROW(detail::traceContours(flipped), InternalError) << "piece " << e << " flipped";
+    detail::Arrangement dropped = a;
+    dropped.sides[e] = detail::Side::None;
+    EXPECT_THROW(detail::traceContours(dropped), InternalError) << "piece " << e << " dropped";
+  }
+}
+
 }  // namespace
 }  // namespace roiclip
