@@ -193,10 +193,10 @@ class RingClipper {
         for (std::size_t i = 0; i < n; ++i) take(i, known.left[i], known.onLine[i]);
       } else {
         withSideCount(*lines_, [&](auto k) {
-          for (std::size_t i = 0; i < n; ++i) {
-            const auto [left, zeros] = lines_->classify<k()>(ring[i]);
-            take(i, left, zeros);
-          }
+          classifyPath(
+              ring.data(), n,
+              [&](IPoint p, std::int64_t& reach) { return lines_->classify<k()>(p, reach); },
+              [&](std::size_t i, SideLines::Masks m) { take(i, m.left, m.zeros); });
         });
       }
       strictlyIn = in;

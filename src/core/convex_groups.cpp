@@ -104,9 +104,10 @@ Place placeOf(const std::vector<IPoint>& ring, const RingBox& box, const SideLin
   // Every vertex lies strictly left of the sides that every corner of the ring's box lies
   // strictly left of (a half-plane is convex): only the other sides are asked per vertex.
   const SideLines::OtherSides asked = sides.otherThan(corners.left);
-  for (std::size_t k = 0, n = ring.size(); k < n; ++k) {
+  const auto classify = [&](IPoint p, std::int64_t& reach) { return asked.classify(p, reach); };
+  classifyPath(ring.data(), ring.size(), classify, [&](std::size_t k, SideLines::Masks m) {
     const IPoint p = ring[k];
-    const auto [left, zeros] = asked.classify(p);
+    const unsigned left = m.left, zeros = m.zeros;
     leftOut[k] = left;
     onLineOut[k] = zeros;
     anyLeft |= left;
@@ -121,7 +122,7 @@ Place placeOf(const std::vector<IPoint>& ring, const RingBox& box, const SideLin
     }
     last = p;
     lastOut = out;
-  }
+  });
   edge(last, lastOut, ring[0], firstOut);
   inClosed = anyOut == 0;
   // In the closed outer half-plane of one side: at most on C's boundary, around no point of C.

@@ -70,14 +70,15 @@ unsigned classifyEach(const CcwRing& s, const SideLines& sides, WeilerScratch& w
   }
   unsigned anyLeft = 0, on = 0;
   // Vertex i of the stored ring is vertex k of the counter-clockwise order.
-  for (std::size_t i = 0; i < n; ++i) {
-    const auto [bits, zeros] = sides.classify<kSides>(points[i]);
-    const std::size_t k = s.reversed ? n - 1 - i : i;
-    left[k] = bits;
-    onLine[k] = zeros;
-    anyLeft |= bits;
-    on |= zeros;
-  }
+  classifyPath(
+      points, n, [&](IPoint p, std::int64_t& reach) { return sides.classify<kSides>(p, reach); },
+      [&](std::size_t i, SideLines::Masks m) {
+        const std::size_t k = s.reversed ? n - 1 - i : i;
+        left[k] = m.left;
+        onLine[k] = m.zeros;
+        anyLeft |= m.left;
+        on |= m.zeros;
+      });
   anyOn = on;
   return anyLeft;
 }

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <random>
 #include <string>
 #include <vector>
@@ -317,6 +318,126 @@ TEST(StageConvexGroups, PlaceBoxIsWhereEveryVertexLies) {
   EXPECT_GT(outside, 100);  // 139, 165 and 155 with this seed
   EXPECT_GT(inside, 100);
   EXPECT_GT(insideSimple, 100);
+}
+
+// classifyPath() classifies a vertex only when the path may have reached a side line since the
+// last one it classified: every point must still get exactly the masks classify() gives it.
+// Random convex rings (3 to kMaxSides corners, pixel-sized and spanning the whole grid range)
+// and random paths: unit pixel steps, long jumps, points on the side lines and next to them.
+TEST(StageConvexGroups, ClassifyPathGivesEveryPointItsOwnMasks) {
+  std::mt19937_64 rng(20261205);
+  const auto uniform = [&](std::int64_t lo, std::int64_t hi) {
+    return std::uniform_int_distribution<std::int64_t>(lo, hi)(rng);
+  };
+  constexpr std::int64_t kRange = std::int64_t{1} << 30;  // Grid::kMaxUnits
+  std::int64_t points = 0, classified = 0;
+  int failures = 0;  // a stale mask is reported for the first few points only
+  for (int trial = 0; trial < 400; ++trial) {
+    const bool huge = trial % 4 == 3;
+    const std::int64_t radius = huge ? kRange / 2 : uniform(4, 600);
+    const std::int64_t cx = huge ? 0 : uniform(-1000, 1000), cy = huge ? 0 : uniform(-1000, 1000);
+    const int corners = trial % 5 == 4 ? detail::kMaxSides : 3 + int(rng() % 6);
+    std::vector<double> angles;
+    for (int i = 0; i < corners; ++i) {
+      angles.push_back(std::uniform_real_distribution<double>(0, 2 * M_PI)(rng));
+    }
+    std::sort(angles.begin(), angles.end());
+    std::vector<detail::IPoint> convex;
+    for (const double a : angles) {
+      convex.push_back({cx + std::llround(double(radius) * std::cos(a)),
+                        cy + std::llround(double(radius) * std::sin(a) * 0.7)});
+    }
+    if (trial % 2 == 1) std::reverse(convex.begin(), convex.end());
+    const int orientation = detail::convexOrientation(convex);
+    if (orientation == 0) continue;
+    const detail::SideLines sides(convex, orientation);
+    const std::size_t m = convex.size();
+    // The path: a walk from a random point, mostly unit steps, sometimes a jump to a point on a
+    // side line (a corner plus a multiple of the side's reduced direction) or beside it.
+    std::vector<detail::IPoint> path;
+    detail::IPoint p{cx + uniform(-radius, radius), cy + uniform(-radius, radius)};
+    for (int i = 0; i < 3000; ++i) {
+      const int kind = int(rng() % 100);
+      if (kind < 3) {
+        const std::size_t j = rng() % m;
+        const detail::IPoint a = convex[j], b = convex[(j + 1) % m];
+        const std::int64_t g = std::gcd(b.x - a.x, b.y - a.y);
+        const std::int64_t t = uniform(-2, 2 + int(rng() % 2) * 2);
+        p = {a.x + t * (b.x - a.x) / g + uniform(-1, 1) * int(kind == 2),
+             a.y + t * (b.y - a.y) / g};
+      } else if (kind < 6) {
+        p = {cx + uniform(-2 * radius, 2 * radius), cy + uniform(-2 * radius, 2 * radius)};
+      } else {
+        const std::int64_t step = huge && kind < 50 ? uniform(1, 1 << 20) : 1;
+        p = {p.x + uniform(-1, 1) * step, p.y + uniform(-1, 1) * step};
+      }
+      p = {std::clamp(p.x, -kRange, kRange), std::clamp(p.y, -kRange, kRange)};
+      path.push_back(p);
+    }
+    points += std::int64_t(path.size());
+    const auto check = [&](const auto& classify, const auto& reference, const char* what) {
+      detail::classifyPath(
+          path.data(), path.size(),
+          [&](detail::IPoint q, std::int64_t& reach) {
+            ++classified;
+            return classify(q, reach);
+          },
+          [&](std::size_t i, detail::SideLines::Masks got) {
+            const detail::SideLines::Masks want = reference(path[i]);
+            if (failures < 5 && (got.left != want.left || got.zeros != want.zeros)) {
+              ++failures;
+              ADD_FAILURE() << what << ", trial " << trial << ", point " << i;
+            }
+          });
+    };
+    check([&](detail::IPoint q, std::int64_t& reach) { return sides.classify(q, reach); },
+          [&](detail::IPoint q) { return sides.classify(q); }, "SideLines");
+    detail::withSideCount(sides, [&](auto k) {
+      check([&](detail::IPoint q, std::int64_t& reach) { return sides.classify<k()>(q, reach); },
+            [&](detail::IPoint q) { return sides.classify<k()>(q); }, "SideLines, unrolled");
+    });
+    // The other sides' test, as the grouping asks it (the known sides come back set).
+    const unsigned known = unsigned(rng()) & sides.all() & ~1U;
+    const detail::SideLines::OtherSides asked = sides.otherThan(known);
+    check([&](detail::IPoint q, std::int64_t& reach) { return asked.classify(q, reach); },
+          [&](detail::IPoint q) { return asked.classify(q); }, "OtherSides");
+  }
+  // Walks straight through an octagon (sides along the axes and the diagonals) from its middle,
+  // in each of the eight directions: points land exactly on side lines after a whole number of
+  // steps, where a reach one step too long gives a stale mask.
+  for (const std::int64_t scale : {std::int64_t{1}, std::int64_t{3}, std::int64_t{7} << 20}) {
+    std::vector<detail::IPoint> octagon = {{10, 0},  {20, 0},  {30, 10}, {30, 20},
+                                           {20, 30}, {10, 30}, {0, 20},  {0, 10}};
+    for (detail::IPoint& c : octagon) c = {c.x * scale, c.y * scale};
+    const detail::SideLines sides(octagon, detail::convexOrientation(octagon));
+    // Unit steps on the small octagons; on the large one, steps of `scale` (and of 1 over its
+    // first 300 points only).
+    for (const std::int64_t step : {std::int64_t{1}, scale}) {
+      for (int dx = -1; dx <= 1; ++dx) {
+        for (int dy = -1; dy <= 1; ++dy) {
+          std::vector<detail::IPoint> path;
+          for (std::int64_t i = 0; i <= std::min<std::int64_t>(40 * scale / step, 300); ++i) {
+            path.push_back({15 * scale + dx * i * step, 15 * scale + dy * i * step});
+          }
+          detail::classifyPath(
+              path.data(), path.size(),
+              [&](detail::IPoint q, std::int64_t& reach) { return sides.classify<8>(q, reach); },
+              [&](std::size_t i, detail::SideLines::Masks got) {
+                const detail::SideLines::Masks want = sides.classify(path[i]);
+                if (failures < 5 && (got.left != want.left || got.zeros != want.zeros)) {
+                  ++failures;
+                  ADD_FAILURE() << "scale " << scale << ", step " << step << ", direction " << dx
+                                << " " << dy << ", point " << i;
+                }
+              });
+        }
+      }
+    }
+  }
+  // Most rings are kept, and most points are not classified again: the walks stay away from
+  // the side lines most of the time (about 36% classified with this seed).
+  EXPECT_GT(points, 300 * 3000);
+  EXPECT_LT(classified, points * 3 / 2) << classified << " of " << points * 3;
 }
 
 // The box decides only for finite vertices within the grid's range: a NaN or an out-of-range
