@@ -194,6 +194,8 @@ bool appendCrossings(const CcwRing& s, int ring, const CcwRing& c, unsigned all,
     if ((lp & lq) == all) continue;  // both ends in C: the edge lies in C
     const unsigned onP = w.onLine[std::size_t(k)], onQ = w.onLine[kq];
     if ((onP & onQ) != 0) return false;  // along a side's line
+    // Both ends strictly on the same sides of every line (most edges outside C): no crossing.
+    if (((lp ^ lq) | onP | onQ) == 0) continue;
     const IPoint p = s[k], q = s[int(kq)];
     const std::size_t before = w.crossings.size();
     unsigned changed = lp ^ lq;
