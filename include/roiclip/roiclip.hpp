@@ -190,8 +190,9 @@ class PreparedRegion {
 std::size_t countDegeneratePaths(const Paths& paths, const Grid& grid);
 
 /// Free the working arrays the calling thread keeps for the free functions above (its largest
-/// call's, up to 64 MiB per array; freed anyway when the thread exits). The next call allocates
-/// them again.
+/// call's, up to 64 MiB per array; of the general path's pre-clip and sweep only arrays up to
+/// 4 KB, of its arrangement and tracing up to 1 MiB; freed anyway when the thread exits). The
+/// next call allocates them again.
 void releaseThreadBuffers();
 
 /// True when the fill rule counts winding number w as inside. (Inline: the sweep asks this for

@@ -14,10 +14,10 @@ namespace roiclip {
 namespace detail {
 namespace {
 
-PolygonSet resolve(const std::vector<InputEdge>& edges, const std::vector<ExactEdge>& exactEdges,
-                   const BooleanSpec& spec, const Grid& grid, Workspace& ws,
+// Stages 1 to 4 on the workspace's edges (Workspace::edges and ::clipped).
+PolygonSet resolve(const BooleanSpec& spec, const Grid& grid, Workspace& ws,
                    std::uint64_t* crossings = nullptr) {
-  Arrangement arrangement = splitEdges(edges, exactEdges, spec, ws);  // stages 1 and 2
+  Arrangement arrangement = splitWorkspaceEdges(spec, ws);  // stages 1 and 2
   if (crossings != nullptr) *crossings = arrangement.crossings;
   Contours contours = traceContours(arrangement, ws.trace);
   // Nesting, where a large call peaks, reads only the vertices of the arrangement: the pieces
@@ -69,7 +69,7 @@ PolygonSet intersectRings(const Rings& rings, FillRule rule, const SnappedOperan
   spec.maxCrossings = budget;
   preclipConvex(rings, convex.rings[0], convex.convex, ws, ws.edges, ws.clipped, known);
   std::uint64_t found = 0;
-  PolygonSet result = resolve(ws.edges, ws.clipped, spec, grid, ws, &found);
+  PolygonSet result = resolve(spec, grid, ws, &found);
   budget -= found;  // the sweep throws before it finds more than the budget
   return result;
 }
@@ -168,7 +168,7 @@ PolygonSet resolveGeneral(Rings& subject, const Rings* clip, const BooleanSpec& 
   Rings().swap(subject);
   if (clip != nullptr) appendRingEdges(*clip, 1, edges);
   ws.clipped.clear();
-  return resolve(edges, ws.clipped, spec, grid, ws);
+  return resolve(spec, grid, ws);
 }
 
 }  // namespace

@@ -384,15 +384,14 @@ void preclipConvex(const Rings& rings, const std::vector<IPoint>& convexRing, in
                    const KnownSides* known) {
   workspace.generalPathUsed = true;
   if (orientation == 0) throw InternalError("preclipConvex: clip ring is not convex");
-  // Reserved up front for every vertex when that is large: at 100k vertices growth by doubling
-  // doubled the bytes allocated, and fresh pages cost more than the clipping (kernel page
-  // faults). Below that the edges grow as kept: W2-1k keeps 481 of its 1,000 edges, and the
-  // reserve was a tenth of the call's peak heap.
-  constexpr std::size_t kReserveAboveBytes = std::size_t(1) << 20;
+  // Reserved up front for every vertex: growth by doubling doubled the bytes allocated at 100k
+  // vertices (fresh pages cost more than the clipping), and on a small call it cost W2-1k 1.5%
+  // of its instructions. The edges are freed once the sweep has its pieces, so the reserve is
+  // not held at the call's peak.
   std::size_t vertexCount = 0;
   for (const std::vector<IPoint>& ring : rings) vertexCount += ring.size();
   edges.clear();
-  if (vertexCount * sizeof(InputEdge) > kReserveAboveBytes) edges.reserve(vertexCount);
+  edges.reserve(vertexCount);
   out.clear();
   if (convexRing.size() <= kMaxCodedSides) {
     RingClipper clipper(convexRing, orientation, workspace, edges, out);
@@ -407,9 +406,8 @@ void preclipConvex(const Rings& rings, const std::vector<IPoint>& convexRing, in
       }
     }
   }
-  // Not kept through the sweep that follows (a chain can be as long as the ring).
-  recycle(workspace.path);
-  recycle(workspace.next);
+  // Not held through the sweep that follows (a chain can be as long as the ring).
+  releaseIfAbove(kKeptStageBytes, workspace.path, workspace.next);
 }
 
 void preclipConvexReference(const Rings& rings, const std::vector<IPoint>& convexRing,

@@ -149,6 +149,7 @@ using CompactWindings = std::array<std::int32_t, kOperands>;
 inline CompactWindings compact(const Windings& w) {
   return {std::int32_t(w[0]), std::int32_t(w[1])};
 }
+inline Windings widen(const CompactWindings& w) { return {w[0], w[1]}; }
 
 /// A piece of the planar arrangement: a maximal part of one or more coincident input edges
 /// that no other edge crosses or touches except at its two ends. 44 bytes (W3-1k-evenodd keeps
@@ -203,6 +204,9 @@ Arrangement splitEdges(const std::vector<InputEdge>& edges,
 /// The same on the calling thread's workspace.
 Arrangement splitEdges(const std::vector<InputEdge>& edges,
                        const std::vector<ExactEdge>& exactEdges, const BooleanSpec& spec);
+/// splitEdges() of the workspace's own edges (Workspace::edges and ::clipped), which it frees
+/// once the sweep holds their pieces when they take more than kKeptStageBytes.
+Arrangement splitWorkspaceEdges(const BooleanSpec& spec, Workspace& workspace);
 
 /// A ring's vertex ids: a run of Contours::vertices, the one array of every ring's vertices.
 struct VertexRun {

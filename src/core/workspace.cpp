@@ -61,6 +61,12 @@ void Workspace::forEachLent(F f) {
   f(trace.contours.vertices);
 }
 
+void Workspace::releaseSweepIfAbove(std::size_t bytes) {
+  if (nodes.size() * sizeof(StatusNode) > bytes) std::deque<StatusNode>().swap(nodes);
+  releaseIfAbove(bytes, freeNodes, pieces, exactRights, starts, sortedStarts, queue, eventPoints,
+                 freeEventPoints, starting, through);
+}
+
 void Workspace::release() {
   std::vector<SweepPiece>().swap(pieces);
   std::vector<XPoint>().swap(exactRights);
