@@ -68,7 +68,7 @@ PolygonSet intersectRings(const Rings& rings, FillRule rule, const SnappedOperan
   // (on a 1M-vertex contour the chains and crossings took 73 MB of its peak). Smaller ones are
   // kept for the next group of the call (freeing them at 4 KB cost W5 scene_08 2% more
   // instructions).
-  const auto release = [](auto& v) { releaseIfAbove(kKeptOutputBytes, v); };
+  const auto release = [](auto& v) { releaseEachAbove(kKeptOutputBytes, v); };
   ws.chains.forEach(release);
   ws.weiler.forEach(release);
   BooleanSpec spec;

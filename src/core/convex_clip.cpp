@@ -407,7 +407,7 @@ void preclipConvex(const Rings& rings, const std::vector<IPoint>& convexRing, in
     }
   }
   // Not held through the sweep that follows (a chain can be as long as the ring).
-  releaseIfAbove(kKeptStageBytes, workspace.path, workspace.next);
+  releaseEachAbove(kKeptStageBytes, workspace.path, workspace.next);
 }
 
 void preclipConvexReference(const Rings& rings, const std::vector<IPoint>& convexRing,

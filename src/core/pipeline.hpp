@@ -151,20 +151,16 @@ inline CompactWindings compact(const Windings& w) {
 }
 inline Windings widen(const CompactWindings& w) { return {w[0], w[1]}; }
 
-/// A piece of the planar arrangement: a maximal part of one or more coincident input edges
-/// that no other edge crosses or touches except at its two ends. 44 bytes (W3-1k-evenodd keeps
-/// 465k of them: they were 80 with 64-bit windings, 64 with 64-bit line coordinates).
-struct EdgePiece {
+/// A grid segment in 32 bits with the winding numbers on its two sides: what a piece carries
+/// while the sweep has it (SweepPiece) and in the arrangement (EdgePiece).
+struct LabelledSegment {
   /// The grid segment it lies on (lineA < lineB), in 32 bits: every grid point lies within
   /// Grid::kMaxUnits = 2^30 units of the origin.
   std::int32_t ax = 0, ay = 0, bx = 0, by = 0;
-  int left = -1;   ///< vertex id of the lexicographically smaller end
-  int right = -1;  ///< vertex id of the other end
   /// Change of each operand's winding number from the side below the piece to the side above
   /// (the sum of the directions of the coincident input edges).
   CompactWindings contribution{};
   CompactWindings windBelow{};  ///< winding numbers just below the piece
-  int below = -1;               ///< the nearest result piece below this one at its left end, or -1
   [[nodiscard]] IPoint lineA() const { return {ax, ay}; }
   [[nodiscard]] IPoint lineB() const { return {bx, by}; }
   [[nodiscard]] IPoint direction() const { return {std::int64_t(bx) - ax, std::int64_t(by) - ay}; }
@@ -176,6 +172,15 @@ struct EdgePiece {
     return {std::int64_t(windBelow[0]) + contribution[0],
             std::int64_t(windBelow[1]) + contribution[1]};
   }
+};
+
+/// A piece of the planar arrangement: a maximal part of one or more coincident input edges
+/// that no other edge crosses or touches except at its two ends. 44 bytes (W3-1k-evenodd keeps
+/// 465k of them: they were 80 with 64-bit windings, 64 with 64-bit line coordinates).
+struct EdgePiece : LabelledSegment {
+  int left = -1;   ///< vertex id of the lexicographically smaller end
+  int right = -1;  ///< vertex id of the other end
+  int below = -1;  ///< the nearest result piece below this one at its left end, or -1
 };
 static_assert(sizeof(EdgePiece) == 44, "the arrangement keeps one per result piece");
 

@@ -131,7 +131,7 @@ class Sweep {
       }
     }
     sortByKey(starts_, ws.sortedStarts);
-    releaseIfAbove(kKeptStageBytes, ws.sortedStarts);
+    releaseEachAbove(kKeptStageBytes, ws.sortedStarts);
     out_ = std::move(ws.arrangement);  // the kept capacity (resolve() gives it back)
     out_.vertices.clear();
     out_.pieces.clear();
@@ -444,10 +444,8 @@ class Sweep {
       if (side != Side::None) {
         a.slot = int(out_.pieces.size());
         EdgePiece kept;
+        static_cast<LabelledSegment&>(kept) = a;  // its line and winding numbers
         kept.left = vertexHere(p);
-        kept.setLine(a.lineA(), a.lineB());
-        kept.contribution = a.contribution;
-        kept.windBelow = compact(wind);
         kept.below = resultBelow;
         growByHalf(out_.pieces);
         out_.pieces.push_back(kept);
@@ -629,7 +627,7 @@ Arrangement splitWorkspaceEdges(const BooleanSpec& spec, Workspace& workspace) {
   {
     Sweep sweep(workspace.edges, workspace.clipped, spec, workspace);
     // The sweep has its pieces: the edges are not read again.
-    releaseIfAbove(kKeptStageBytes, workspace.edges, workspace.clipped);
+    releaseEachAbove(kKeptStageBytes, workspace.edges, workspace.clipped);
     result = sweep.run();
   }
   workspace.releaseSweepIfAbove(kKeptStageBytes);

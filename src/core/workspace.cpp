@@ -63,8 +63,8 @@ void Workspace::forEachLent(F f) {
 
 void Workspace::releaseSweepIfAbove(std::size_t bytes) {
   if (nodes.size() * sizeof(StatusNode) > bytes) std::deque<StatusNode>().swap(nodes);
-  releaseIfAbove(bytes, freeNodes, pieces, exactRights, starts, sortedStarts, queue, eventPoints,
-                 freeEventPoints, starting, through);
+  releaseEachAbove(bytes, freeNodes, pieces, exactRights, starts, sortedStarts, queue, eventPoints,
+                   freeEventPoints, starting, through);
 }
 
 void Workspace::release() {

@@ -37,11 +37,14 @@ void recycle(std::vector<T>& v) {
 /// The general path frees each working array of a stage that holds more than this once the
 /// stage is done with it: the next stage's arrays then take its place instead of adding to the
 /// call's peak (W2-1k even-odd held its 481 sweep pieces, 92 KB, through tracing and nesting).
-/// Smaller ones are kept, so a small call repeated on a thread allocates none of them; freeing
-/// and allocating the larger ones again cost no measurable time on W2 and W5.
+/// Smaller ones are kept, so a small call repeated on a thread allocates none of them. Freeing
+/// and allocating the larger ones again costs W2 and W5 up to 2% more instructions (3 to 8% of
+/// their time in alternating runs; bench/RESULTS.md, speed session 16).
 constexpr std::size_t kKeptStageBytes = std::size_t(4) << 10;
+/// Frees each of `arrays` that holds more than `bytes` (TraceScratch::releaseIfAbove() instead
+/// frees its arrays together, by their sum).
 template <class... V>
-void releaseIfAbove(std::size_t bytes, V&... arrays) {
+void releaseEachAbove(std::size_t bytes, V&... arrays) {
   const auto one = [bytes](auto& v) {
     if (v.capacity() * sizeof(v[0]) > bytes) std::remove_reference_t<decltype(v)>().swap(v);
   };
@@ -221,14 +224,10 @@ struct WeilerScratch {
 };
 
 /// A piece of an input edge while the sweep has it (split_edges.cpp).
-struct SweepPiece {
+struct SweepPiece : LabelledSegment {
   XPoint left;
-  /// The grid segment it lies on (lineA < lineB), in 32 bits as in EdgePiece.
-  std::int32_t ax = 0, ay = 0, bx = 0, by = 0;
   /// Its right end's cached x, which decides most comparisons with it (exactRight below).
   double rightFx = 0;
-  CompactWindings contribution{};
-  CompactWindings windBelow{};
   StatusNode* node = nullptr;  ///< its status node while in the status, else null
   int slot = -1;         ///< index of its output piece (result pieces only) while in the status
   int resultBelow = -1;  ///< nearest result piece below it when it was inserted
@@ -243,19 +242,6 @@ struct SweepPiece {
   bool open = false;  ///< a piece of an open polyline (zero contribution, never merged)
   LinePlace place = LinePlace::Outside;  ///< open pieces: where it lies
   [[nodiscard]] int nearestResult() const { return slot >= 0 ? slot : resultBelow; }
-  [[nodiscard]] IPoint lineA() const { return {ax, ay}; }
-  [[nodiscard]] IPoint lineB() const { return {bx, by}; }
-  void setLine(IPoint a, IPoint b) {
-    ax = std::int32_t(a.x);
-    ay = std::int32_t(a.y);
-    bx = std::int32_t(b.x);
-    by = std::int32_t(b.y);
-  }
-  [[nodiscard]] IPoint direction() const { return {std::int64_t(bx) - ax, std::int64_t(by) - ay}; }
-  [[nodiscard]] Windings windAbove() const {
-    return {std::int64_t(windBelow[0]) + contribution[0],
-            std::int64_t(windBelow[1]) + contribution[1]};
-  }
 };
 static_assert(sizeof(SweepPiece) == 160, "one per input edge, all live through the sweep");
 

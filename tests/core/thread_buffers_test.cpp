@@ -189,8 +189,8 @@ TEST(ThreadBuffers, TheGeneralPathKeepsNoLargeStageArrayAndReleaseFreesTheRest) 
 // The general path's peak heap on a long self-touching contour (a 200k-step random pixel walk,
 // cut by a quad). Each stage frees its large arrays when it is done (the sweep-free attempts'
 // chains and crossings, the pre-clip's path buffers and edges, the sweep's pieces and events),
-// and the arrangement grows by half: 171 bytes per input vertex at the peak, where the arrays
-// held through every stage and the arrangement grown by doubling took 235.
+// and the arrangement grows by half up to 1 MiB: 171 bytes per input vertex at the peak, where the
+// arrays held through every stage and the arrangement grown by doubling took 235.
 TEST(ThreadBuffers, TheGeneralPathsPeakOnALongSelfTouchingContour) {
   std::mt19937 rng(11);
   constexpr int kSteps = 200000;
