@@ -15,6 +15,7 @@
 #include <roiclip/geometry.hpp>
 #include <roiclip/roiclip.hpp>
 
+#include "chunked_array.hpp"
 #include "predicates.hpp"
 
 namespace roiclip::detail {
@@ -189,7 +190,8 @@ static_assert(sizeof(EdgePiece) == 44, "the arrangement keeps one per result pie
 /// lexicographic order. Pieces that do not bound the result are never stored, so memory is
 /// linear in input plus output.
 struct Arrangement {
-  std::vector<XPoint> vertices;
+  /// In chunks of 2^14 (1 MiB): grown without copies or a doubled capacity (chunked_array.hpp).
+  ChunkedArray<XPoint, 14> vertices;
   std::vector<EdgePiece> pieces;
   std::vector<Side> sides;  ///< filled side of each piece (never Side::None)
   /// Every piece of every open input edge, in sweep order (so the pieces of one edge come

@@ -22,12 +22,12 @@
 namespace roiclip::detail {
 namespace {
 
-// The arrangement's arrays grow by half, not by doubling, up to 1 MiB (kKeptOutputBytes, what a
-// call keeps for the next): how many vertices and pieces the crossings add is known only at the
-// end, and the old and the new array are both live when one grows (W2-1k even-odd: 610 vertices
-// of 64 bytes, grown from 544 to 1,088 by doubling, held 104 KB at the call's peak). Beyond that
-// every new array is fresh pages, and growing by half faulted in more of them (4M crossings took
-// 45% longer), so large ones double.
+// The arrangement's pieces grow by half, not by doubling, up to 1 MiB (kKeptOutputBytes, what a
+// call keeps for the next): how many pieces the crossings add is known only at the end, and the
+// old and the new array are both live when one grows (W2-1k even-odd: 743 pieces, grown from
+// 544 to 1,088 by doubling). Beyond that every new array is fresh pages, and growing by half
+// faulted in more of them (4M crossings took 45% longer), so large ones double. The vertices
+// are a ChunkedArray instead, which never copies a large array.
 template <class T>
 void growByHalf(std::vector<T>& v) {
   constexpr std::size_t kHalfUpTo = kKeptOutputBytes / sizeof(T);
@@ -312,7 +312,6 @@ class Sweep {
   int vertexHere(const XPoint& p) {
     if (vertex_ < 0) {
       vertex_ = int(out_.vertices.size());
-      growByHalf(out_.vertices);
       out_.vertices.push_back(p);
     }
     return vertex_;

@@ -25,10 +25,10 @@ namespace roiclip::detail {
 /// calls. recycle() empties an array after use and keeps its capacity up to kKeptScratchBytes;
 /// a larger one is freed.
 constexpr std::size_t kKeptScratchBytes = std::size_t(64) << 20;
-template <class T>
-void recycle(std::vector<T>& v) {
-  if (v.capacity() * sizeof(T) > kKeptScratchBytes) {
-    std::vector<T>().swap(v);
+template <class V>
+void recycle(V& v) {
+  if (v.capacity() * sizeof(typename V::value_type) > kKeptScratchBytes) {
+    V().swap(v);
   } else {
     v.clear();
   }
@@ -56,10 +56,10 @@ void releaseEachAbove(std::size_t bytes, V&... arrays) {
 /// 10,000 contours of ~20 vertices) then allocates none of them. Larger ones are freed, as
 /// nesting, where a large call peaks, should not hold them.
 constexpr std::size_t kKeptOutputBytes = std::size_t(1) << 20;
-template <class T>
-void keepIfSmall(std::vector<T>& used, std::vector<T>& kept) {
-  if (used.capacity() * sizeof(T) <= kKeptOutputBytes) kept.swap(used);
-  std::vector<T>().swap(used);
+template <class V>
+void keepIfSmall(V& used, V& kept) {
+  if (used.capacity() * sizeof(typename V::value_type) <= kKeptOutputBytes) kept.swap(used);
+  V().swap(used);
 }
 /// The same for a set of rings (a snapped operand's), by the storage of all of them together.
 void keepIfSmall(Rings& used, Rings& kept);
