@@ -151,6 +151,11 @@ Contours traceContours(const Arrangement& arrangement, TraceScratch& scratch) {
     pairAtSharedVertex(pieces, v, outs.data(), ins.data(), int(outs.size()), rays, pairOut);
   }
   const std::size_t sharedVertices = shared.size();
+  // What the walk needs of the pairing besides pairOut: where several pieces leave a vertex.
+  std::vector<char>& meets = scratch.meets;
+  meets.assign(std::size_t(vertexCount), 0);
+  for (const int v : shared) meets[std::size_t(v)] = 1;
+  scratch.releasePairingIfAbove(kKeptOutputBytes);
 
   Contours result = std::move(scratch.contours);  // the kept capacity (resolve() gives it back)
   result.rings.clear();
@@ -166,11 +171,9 @@ Contours traceContours(const Arrangement& arrangement, TraceScratch& scratch) {
   result.vertices.reserve(pieces.size());
   std::vector<int>& onStack = scratch.onStack;
   onStack.assign(std::size_t(vertexCount), -1);
-  // A walk holds at most every piece once: reserved, so the stacks never grow.
+  // A walk holds at most every piece once, but mostly a few: the stacks grow as they need.
   std::vector<int>& stackV = scratch.stackV;
   std::vector<int>& stackE = scratch.stackE;
-  stackV.reserve(pieces.size() + 1);
-  stackE.reserve(pieces.size());
   for (std::size_t start = 0; start < pieces.size(); ++start) {
     if (sides[start] == Side::None || ringOf[start] != -1) continue;
     const int v0 = from(int(start));
@@ -203,7 +206,7 @@ Contours traceContours(const Arrangement& arrangement, TraceScratch& scratch) {
           // or another part touching this ring's edge must find a vertex of this ring at the
           // touch point, or after rounding to doubles it may cross the edge. The smallest
           // vertex is never straight-on.
-          if (outNext[std::size_t(outHead[std::size_t(v)])] >= 0 ||
+          if (meets[std::size_t(v)] != 0 ||
               crossSign(pieces[in].direction(), pieces[out].direction()) != 0) {
             if (v < minVertex) {
               minVertex = v;

@@ -302,6 +302,7 @@ struct ClipVertex {
 struct TraceScratch {
   std::vector<int> outHead, outNext, balance, inHead, inNext, shared, outs, ins, pairOut, onStack,
       stackV, stackE;
+  std::vector<char> meets;  ///< per vertex: several result pieces leave it
   /// Storage lent to the traced contours of a call (not a working array: not in forEach()).
   Contours contours;
   /// Every array, for recycleAll() / release().
@@ -311,14 +312,30 @@ struct TraceScratch {
                                 &ins, &pairOut, &onStack, &stackV, &stackE}) {
       f(*v);
     }
+    f(meets);
   }
   /// Frees every array when together they hold more than `bytes`: the peak of a large call is
   /// in nesting, after tracing, so large tracing arrays are not kept through it; small calls
   /// keep theirs (no allocation on the next call).
   void releaseIfAbove(std::size_t bytes) {
+    releaseTogetherAbove(bytes, [this](auto f) { forEach(f); });
+  }
+  /// The same for the pairing's arrays (the pieces leaving and arriving at each vertex, the
+  /// balances), which the walk after it does not read: W3-1k even-odd held 9 MB of them through
+  /// the walk, where it peaks.
+  void releasePairingIfAbove(std::size_t bytes) {
+    releaseTogetherAbove(bytes, [this](auto f) {
+      for (std::vector<int>* v : {&outHead, &outNext, &balance, &inHead, &inNext}) f(*v);
+    });
+  }
+
+ private:
+  // Frees the arrays `each` lists when together they hold more than `bytes`.
+  template <class Each>
+  static void releaseTogetherAbove(std::size_t bytes, Each&& each) {
     std::size_t held = 0;
-    forEach([&](auto& v) { held += v.capacity() * sizeof(v[0]); });
-    if (held > bytes) forEach([](auto& v) { std::remove_reference_t<decltype(v)>().swap(v); });
+    each([&](auto& v) { held += v.capacity() * sizeof(v[0]); });
+    if (held > bytes) each([](auto& v) { std::remove_reference_t<decltype(v)>().swap(v); });
   }
 };
 
