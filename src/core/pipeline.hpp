@@ -87,6 +87,9 @@ struct BooleanSpec {
   FillRule clipRule = FillRule::EvenOdd;
   /// Limits::maxCrossings: the sweep throws ResourceLimitError when it finds more crossings.
   std::uint64_t maxCrossings = Limits::kUnlimited;
+  /// Whether the arrangement records the winding numbers of its pieces (Arrangement::windings):
+  /// the stage tests check them; no stage reads them.
+  bool recordWindings = false;
   /// Whether a point with these winding numbers is in the result. (Inline: the sweep asks this
   /// twice for every piece.) The operation is a truth table over (subject filled, clip filled),
   /// looked up without a branch on the windings: on W3 a branch on whether the subject is
@@ -152,16 +155,12 @@ inline CompactWindings compact(const Windings& w) {
 }
 inline Windings widen(const CompactWindings& w) { return {w[0], w[1]}; }
 
-/// A grid segment in 32 bits with the winding numbers on its two sides: what a piece carries
-/// while the sweep has it (SweepPiece) and in the arrangement (EdgePiece).
-struct LabelledSegment {
+/// A grid segment in 32 bits: the line a piece lies on, while the sweep has it (SweepPiece) and
+/// in the arrangement (EdgePiece).
+struct GridSegment {
   /// The grid segment it lies on (lineA < lineB), in 32 bits: every grid point lies within
   /// Grid::kMaxUnits = 2^30 units of the origin.
   std::int32_t ax = 0, ay = 0, bx = 0, by = 0;
-  /// Change of each operand's winding number from the side below the piece to the side above
-  /// (the sum of the directions of the coincident input edges).
-  CompactWindings contribution{};
-  CompactWindings windBelow{};  ///< winding numbers just below the piece
   [[nodiscard]] IPoint lineA() const { return {ax, ay}; }
   [[nodiscard]] IPoint lineB() const { return {bx, by}; }
   [[nodiscard]] IPoint direction() const { return {std::int64_t(bx) - ax, std::int64_t(by) - ay}; }
@@ -169,21 +168,33 @@ struct LabelledSegment {
     static_assert(Grid::kMaxUnits <= (std::int64_t{1} << 30), "line coordinates fit 32 bits");
     ax = std::int32_t(a.x), ay = std::int32_t(a.y), bx = std::int32_t(b.x), by = std::int32_t(b.y);
   }
+};
+
+/// The winding numbers on the two sides of a piece.
+struct PieceWindings {
+  /// Change of each operand's winding number from the side below the piece to the side above
+  /// (the sum of the directions of the coincident input edges).
+  CompactWindings contribution{};
+  CompactWindings windBelow{};  ///< winding numbers just below the piece
   [[nodiscard]] Windings windAbove() const {
     return {std::int64_t(windBelow[0]) + contribution[0],
             std::int64_t(windBelow[1]) + contribution[1]};
   }
 };
 
+/// A grid segment with the winding numbers on its two sides: a piece while the sweep has it.
+struct LabelledSegment : GridSegment, PieceWindings {};
+
 /// A piece of the planar arrangement: a maximal part of one or more coincident input edges
-/// that no other edge crosses or touches except at its two ends. 44 bytes (W3-1k-evenodd keeps
-/// 465k of them: they were 80 with 64-bit windings, 64 with 64-bit line coordinates).
-struct EdgePiece : LabelledSegment {
+/// that no other edge crosses or touches except at its two ends. 28 bytes (W3-1k-evenodd keeps
+/// 465k of them: they were 80 with 64-bit windings, 64 with 64-bit line coordinates, 44 with
+/// their winding numbers, which no stage after the sweep reads).
+struct EdgePiece : GridSegment {
   int left = -1;   ///< vertex id of the lexicographically smaller end
   int right = -1;  ///< vertex id of the other end
   int below = -1;  ///< the nearest result piece below this one at its left end, or -1
 };
-static_assert(sizeof(EdgePiece) == 44, "the arrangement keeps one per result piece");
+static_assert(sizeof(EdgePiece) == 28, "the arrangement keeps one per result piece");
 
 /// The result pieces of the planar arrangement of all input edges, in the order the sweep met
 /// them (so a piece's `below` always has a smaller index), with the vertices they use in
@@ -194,6 +205,8 @@ struct Arrangement {
   ChunkedArray<XPoint, 14> vertices;
   std::vector<EdgePiece> pieces;
   std::vector<Side> sides;  ///< filled side of each piece (never Side::None)
+  /// The winding numbers on each piece's sides, only with BooleanSpec::recordWindings.
+  std::vector<PieceWindings> windings;
   /// Every piece of every open input edge, in sweep order (so the pieces of one edge come
   /// left to right).
   std::vector<OpenPiece> openPieces;

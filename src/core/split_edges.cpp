@@ -136,6 +136,7 @@ class Sweep {
     out_.vertices.clear();
     out_.pieces.clear();
     out_.sides.clear();
+    out_.windings.clear();
     out_.openPieces.clear();
     out_.pieces.reserve(total / 4 + 16);
     out_.vertices.reserve(total / 4 + 16);
@@ -443,7 +444,8 @@ class Sweep {
       if (side != Side::None) {
         a.slot = int(out_.pieces.size());
         EdgePiece kept;
-        static_cast<LabelledSegment&>(kept) = a;  // its line and winding numbers
+        static_cast<GridSegment&>(kept) = a;
+        if (spec_.recordWindings) out_.windings.push_back(a);
         kept.left = vertexHere(p);
         kept.below = resultBelow;
         growByHalf(out_.pieces);

@@ -35,12 +35,14 @@ TEST(StageSplitEdges, BowTieIsCutAtItsCrossingIntoSixLabelledPieces) {
       {"(0,0)-(0,10)", {1, 0}},   {"(0,0)-(5,5)", {0, 1}},   {"(0,10)-(5,5)", {1, 0}},
       {"(5,5)-(10,10)", {-1, 0}}, {"(5,5)-(10,0)", {0, -1}}, {"(10,0)-(10,10)", {0, -1}}};
   ASSERT_EQ(a.pieces.size(), expected.size());
-  for (const detail::EdgePiece& p : a.pieces) {
+  ASSERT_EQ(a.windings.size(), a.pieces.size());
+  for (std::size_t k = 0; k < a.pieces.size(); ++k) {
+    const detail::EdgePiece& p = a.pieces[k];
     const std::string name = names[std::size_t(p.left)] + "-" + names[std::size_t(p.right)];
     const auto it = expected.find(name);
     ASSERT_NE(it, expected.end()) << "unexpected piece " << name;
-    EXPECT_EQ(p.windBelow[0], it->second.first) << name;
-    EXPECT_EQ(p.windAbove()[0], it->second.second) << name;
+    EXPECT_EQ(a.windings[k].windBelow[0], it->second.first) << name;
+    EXPECT_EQ(a.windings[k].windAbove()[0], it->second.second) << name;
   }
 }
 
@@ -61,13 +63,14 @@ TEST(StageSplitEdges, PieceLabelsMatchTheExactWindingNumbers) {
       SCOPED_TRACE("input " + std::to_string(i) + " " + toString(rule));
       const detail::Arrangement a = stages::arrange(inputs[i], nullptr, stages::simplifyWith(rule));
       kept += a.pieces.size();
+      ASSERT_EQ(a.windings.size(), a.pieces.size());
       for (std::size_t k = 0; k < a.pieces.size(); ++k) {
         const auto [below, above] = stages::sidePoints(a, a.pieces[k], 1.0 / 64);
-        EXPECT_EQ(testing::exactWinding(inputs[i], below), a.pieces[k].windBelow[0]) << k;
-        EXPECT_EQ(testing::exactWinding(inputs[i], above), a.pieces[k].windAbove()[0]) << k;
+        EXPECT_EQ(testing::exactWinding(inputs[i], below), a.windings[k].windBelow[0]) << k;
+        EXPECT_EQ(testing::exactWinding(inputs[i], above), a.windings[k].windAbove()[0]) << k;
         // Only result boundary is kept, with its filled side.
-        const bool filledAbove = isFilled(rule, a.pieces[k].windAbove()[0]);
-        EXPECT_NE(isFilled(rule, a.pieces[k].windBelow[0]), filledAbove) << k;
+        const bool filledAbove = isFilled(rule, a.windings[k].windAbove()[0]);
+        EXPECT_NE(isFilled(rule, a.windings[k].windBelow[0]), filledAbove) << k;
         EXPECT_EQ(a.sides[k], filledAbove ? detail::Side::Above : detail::Side::Below) << k;
       }
     }
@@ -123,12 +126,13 @@ TEST(StageSplitEdges, BothOperandsSelfIntersectingOnACoarseGrid) {
       how.subjectRule = how.clipRule = rule;
       const detail::Arrangement a = stages::arrange(subject, &clipPaths, how);
       ASSERT_GT(a.pieces.size(), 20u);
+      ASSERT_EQ(a.windings.size(), a.pieces.size());
       for (std::size_t k = 0; k < a.pieces.size(); ++k) {
         const auto [below, above] = stages::sidePoints(a, a.pieces[k], 1e-6);
-        EXPECT_EQ(testing::exactWinding(subject, below), a.pieces[k].windBelow[0]) << k;
-        EXPECT_EQ(testing::exactWinding(subject, above), a.pieces[k].windAbove()[0]) << k;
-        EXPECT_EQ(testing::exactWinding(clipPaths, below), a.pieces[k].windBelow[1]) << k;
-        EXPECT_EQ(testing::exactWinding(clipPaths, above), a.pieces[k].windAbove()[1]) << k;
+        EXPECT_EQ(testing::exactWinding(subject, below), a.windings[k].windBelow[0]) << k;
+        EXPECT_EQ(testing::exactWinding(subject, above), a.windings[k].windAbove()[0]) << k;
+        EXPECT_EQ(testing::exactWinding(clipPaths, below), a.windings[k].windBelow[1]) << k;
+        EXPECT_EQ(testing::exactWinding(clipPaths, above), a.windings[k].windAbove()[1]) << k;
       }
       const PolygonSet r = clip(ClipOp::Intersection, subject, clipPaths, rule, rule);
       const double truth =

@@ -23,6 +23,7 @@ inline const Grid kUnitGrid{1.0};
 inline detail::BooleanSpec simplifyWith(FillRule rule) {
   detail::BooleanSpec how;
   how.subjectRule = rule;
+  how.recordWindings = true;
   return how;
 }
 
@@ -30,6 +31,7 @@ inline detail::BooleanSpec clipWith(ClipOp op) {
   detail::BooleanSpec how;
   how.binary = true;
   how.op = op;
+  how.recordWindings = true;
   return how;
 }
 
