@@ -80,6 +80,8 @@ class ChunkedArray {
   const T& operator[](std::size_t i) const { return chunks_[i >> kChunkBits][i & (kChunk - 1)]; }
   T& operator[](std::size_t i) { return chunks_[i >> kChunkBits][i & (kChunk - 1)]; }
   [[nodiscard]] const T& back() const { return end_[-1]; }
+  /// The elements as one array when they fit the first chunk, else null.
+  [[nodiscard]] const T* contiguous() const { return chunks_.size() == 1 ? chunks_[0] : nullptr; }
   [[nodiscard]] const_iterator begin() const { return {this, 0}; }
   [[nodiscard]] const_iterator end() const { return {this, size_}; }
 

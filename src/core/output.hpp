@@ -23,11 +23,14 @@ class OutputFrame {
   /// The coordinate of units/w on the axis whose origin is originUnits (0: x, 1: y).
   [[nodiscard]] double coordinate(i128 units, i128 w, int axis) const;
   /// Both coordinates of an exact point.
-  [[nodiscard]] Point point(const XPoint& p) const {
-    if (gridFast_ && p.w == 1) {  // a grid point (within the grid's range, as every vertex)
-      return point(IPoint{std::int64_t(p.x), std::int64_t(p.y)});
+  [[nodiscard]] Point point(const XPoint& p) const { return point(p.x, p.y, p.w); }
+  [[nodiscard]] Point point(const PackedPoint& p) const { return point(p.x(), p.y(), p.w); }
+  /// Both coordinates of (x/w, y/w).
+  [[nodiscard]] Point point(i128 x, i128 y, i128 w) const {
+    if (gridFast_ && w == 1) {  // a grid point (within the grid's range, as every vertex)
+      return point(IPoint{std::int64_t(x), std::int64_t(y)});
     }
-    return {coordinate(p.x, p.w, 0), coordinate(p.y, p.w, 1)};
+    return {coordinate(x, w, 0), coordinate(y, w, 1)};
   }
   /// Both coordinates of a grid point.
   [[nodiscard]] Point point(IPoint p) const {

@@ -195,15 +195,18 @@ struct EdgePiece : GridSegment {
   int below = -1;  ///< the nearest result piece below this one at its left end, or -1
 };
 static_assert(sizeof(EdgePiece) == 28, "the arrangement keeps one per result piece");
+/// In chunks of 2^15 (896 KiB), as the vertices.
+using EdgePieces = ChunkedArray<EdgePiece, 15>;
 
 /// The result pieces of the planar arrangement of all input edges, in the order the sweep met
 /// them (so a piece's `below` always has a smaller index), with the vertices they use in
 /// lexicographic order. Pieces that do not bound the result are never stored, so memory is
 /// linear in input plus output.
 struct Arrangement {
-  /// In chunks of 2^14 (1 MiB): grown without copies or a doubled capacity (chunked_array.hpp).
-  ChunkedArray<XPoint, 14> vertices;
-  std::vector<EdgePiece> pieces;
+  /// In chunks of 2^15 (1 MiB): grown without copies or a doubled capacity (chunked_array.hpp).
+  /// The sweep appends them one at a time; how many there are is known only at its end.
+  ChunkedArray<PackedPoint, 15> vertices;
+  EdgePieces pieces;
   std::vector<Side> sides;  ///< filled side of each piece (never Side::None)
   /// The winding numbers on each piece's sides, only with BooleanSpec::recordWindings.
   std::vector<PieceWindings> windings;

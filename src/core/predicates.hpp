@@ -90,6 +90,41 @@ struct XPoint {
   explicit XPoint(IPoint p) : x(p.x), y(p.y), w(1), fx(double(p.x)), fy(double(p.y)) {}
 };
 
+/// An exact point as the arrangement keeps it: 32 bytes instead of XPoint's 64 (W3-1k even-odd
+/// keeps 350k vertices through tracing, where it peaks). X and Y in 96 bits, W in 64, no cached
+/// doubles. Every vertex the sweep makes is a grid point or the crossing of two grid segments
+/// within the grid's range (coordinates within 2^30 units of the origin; pointAlong()): W =
+/// |d1 x d2| <= 2^63, and |X|, |Y| <= 2^30 W + 2^31 W < 2^95.
+struct PackedPoint {
+  std::uint64_t xLow = 0, yLow = 0, w = 1;
+  std::int32_t xHigh = 0, yHigh = 0;
+  PackedPoint() = default;
+  /// p must be representable (representable()).
+  explicit PackedPoint(const XPoint& p)
+      : xLow(std::uint64_t(p.x)),
+        yLow(std::uint64_t(p.y)),
+        w(std::uint64_t(p.w)),
+        xHigh(std::int32_t(p.x >> 64)),
+        yHigh(std::int32_t(p.y >> 64)) {}
+  /// Whether X and Y fit 96 bits and W (> 0, as in every XPoint) 64: the high words alone.
+  [[nodiscard]] static bool representable(const XPoint& p) {
+    const auto fits32 = [](i128 v) {
+      return (std::uint64_t(std::int64_t(v >> 64)) + 0x80000000U) >> 32 == 0;
+    };
+    return fits32(p.x) & fits32(p.y) & (std::uint64_t(p.w >> 64) == 0);
+  }
+  [[nodiscard]] i128 x() const { return join(xHigh, xLow); }
+  [[nodiscard]] i128 y() const { return join(yHigh, yLow); }
+  /// The point with its cached doubles (computed again: two divisions).
+  [[nodiscard]] XPoint unpack() const { return XPoint(x(), y(), i128(w)); }
+
+ private:
+  static i128 join(std::int32_t high, std::uint64_t low) {
+    return i128(high) * (i128(1) << 64) + i128(low);
+  }
+};
+static_assert(sizeof(PackedPoint) == 32);
+
 inline i256 wide(i128 v) { return i256(v); }
 inline int signOf(i128 v) { return (v > 0) - (v < 0); }
 inline int signOf(const i256& v) { return v.sign(); }

@@ -172,7 +172,8 @@ std::vector<InputEdge> snapRoundPieces(const Arrangement& arrangement, std::int6
   std::vector<IPoint> pixelOfVertex;
   pixelOfVertex.reserve(arrangement.vertices.size());
   bool moves = false;  // some vertex is not a pixel centre
-  for (const XPoint& v : arrangement.vertices) {
+  for (const PackedPoint& packed : arrangement.vertices) {
+    const XPoint v = packed.unpack();
     pixelOfVertex.push_back(pixelOf(v, unitsPerStep));
     const IPoint c = pixelOfVertex.back();
     moves = moves || v.w != 1 || v.x != i128(c.x) * unitsPerStep || v.y != i128(c.y) * unitsPerStep;
@@ -192,8 +193,8 @@ std::vector<InputEdge> snapRoundPieces(const Arrangement& arrangement, std::int6
     const bool forward = arrangement.sides[e] == Side::Above;  // left -> right
     const int from = forward ? piece.left : piece.right;
     const int to = forward ? piece.right : piece.left;
-    const XPoint& p = arrangement.vertices[std::size_t(from)];
-    const XPoint& q = arrangement.vertices[std::size_t(to)];
+    const XPoint p = arrangement.vertices[std::size_t(from)].unpack();
+    const XPoint q = arrangement.vertices[std::size_t(to)].unpack();
     const IPoint first = pixelOfVertex[std::size_t(from)];
     const IPoint last = pixelOfVertex[std::size_t(to)];
     IPoint d = piece.direction();
@@ -223,7 +224,7 @@ namespace {
 
 bool allOnGrid(const Arrangement& arrangement) {
   return std::all_of(arrangement.vertices.begin(), arrangement.vertices.end(),
-                     [](const XPoint& v) { return v.w == 1; });
+                     [](const PackedPoint& v) { return v.w == 1; });
 }
 
 // The output coordinate of step index n: correctly rounded n * step where that is cheap to

@@ -22,19 +22,6 @@
 namespace roiclip::detail {
 namespace {
 
-// The arrangement's pieces grow by half, not by doubling, up to 1 MiB (kKeptOutputBytes, what a
-// call keeps for the next): how many pieces the crossings add is known only at the end, and the
-// old and the new array are both live when one grows (W2-1k even-odd: 743 pieces, grown from
-// 544 to 1,088 by doubling). Beyond that every new array is fresh pages, and growing by half
-// faulted in more of them (4M crossings took 45% longer), so large ones double. The vertices
-// are a ChunkedArray instead, which never copies a large array.
-template <class T>
-void growByHalf(std::vector<T>& v) {
-  constexpr std::size_t kHalfUpTo = kKeptOutputBytes / sizeof(T);
-  const std::size_t n = v.capacity();
-  if (v.size() == n) v.reserve(n < kHalfUpTo ? n + n / 2 + 16 : 2 * n);
-}
-
 // The exact point of an event: its coordinates from the pool, its cached doubles.
 inline XPoint eventPoint(const SweepEvent& e, const std::vector<ExactCoords>& points) {
   const ExactCoords& c = points[std::size_t(e.point)];
@@ -60,6 +47,12 @@ inline bool eventAfter(const SweepEvent& a, const SweepEvent& b,
   const double d = a.fx - b.fx;  // exactly -(b.fx - a.fx): compareCachedInBox()'s two tests
   if (__builtin_expect(std::fabs(d) > kCachedInBoxBound, 1)) return d > 0;
   return eventAfterExact(a, b, points);
+}
+
+// Every vertex lies within the grid's range, so PackedPoint holds it: a sweep that made one
+// beyond has a bug.
+[[noreturn, gnu::noinline, gnu::cold]] void vertexBeyondRange() {
+  throw InternalError("splitEdges: a vertex beyond the grid's range");
 }
 
 // q == p for a grid point q: grid points always have W == 1 (lineIntersection() stores
@@ -313,7 +306,8 @@ class Sweep {
   int vertexHere(const XPoint& p) {
     if (vertex_ < 0) {
       vertex_ = int(out_.vertices.size());
-      out_.vertices.push_back(p);
+      if (__builtin_expect(!PackedPoint::representable(p), 0)) vertexBeyondRange();
+      out_.vertices.push_back(PackedPoint(p));
     }
     return vertex_;
   }
@@ -448,7 +442,6 @@ class Sweep {
         if (spec_.recordWindings) out_.windings.push_back(a);
         kept.left = vertexHere(p);
         kept.below = resultBelow;
-        growByHalf(out_.pieces);
         out_.pieces.push_back(kept);
         out_.sides.push_back(side);
       }

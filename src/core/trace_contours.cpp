@@ -42,9 +42,10 @@ bool inSectorCcw(IPoint a, IPoint b, IPoint c) {
 // Pairs the `count` pieces arriving at vertex v with the `count` (> 1) leaving it: each
 // incoming piece with the outgoing piece next to it clockwise. Apart from traceContours' loop
 // (rare on most inputs, and it keeps that loop small).
-[[gnu::noinline]] void pairAtSharedVertex(const std::vector<EdgePiece>& pieces, int v,
-                                          const int* outgoing, const int* incoming, int count,
-                                          std::vector<Ray>& rays, std::vector<int>& pairOut) {
+template <class Pieces>
+[[gnu::noinline]] void pairAtSharedVertex(const Pieces& pieces, int v, const int* outgoing,
+                                          const int* incoming, int count, std::vector<Ray>& rays,
+                                          std::vector<int>& pairOut) {
   const auto along = [&](int e) {
     const IPoint d = pieces[std::size_t(e)].direction();
     return pieces[std::size_t(e)].left == v ? d : IPoint{-d.x, -d.y};
@@ -84,9 +85,20 @@ Contours traceContours(const Arrangement& arrangement) {
   return traceContours(arrangement, scratch);
 }
 
-Contours traceContours(const Arrangement& arrangement, TraceScratch& scratch) {
+namespace {
+
+// The pieces of an arrangement that fit one chunk, as a plain array: most calls, which then
+// index them without the chunk step.
+struct FlatPieces {
+  const EdgePiece* data;
+  std::size_t count;
+  [[nodiscard]] std::size_t size() const { return count; }
+  const EdgePiece& operator[](std::size_t i) const { return data[i]; }
+};
+
+template <class Pieces>
+Contours trace(const Arrangement& arrangement, const Pieces& pieces, TraceScratch& scratch) {
   const auto& sides = arrangement.sides;
-  const auto& pieces = arrangement.pieces;
   const int vertexCount = int(arrangement.vertices.size());
   auto from = [&](int e) { return sides[e] == Side::Above ? pieces[e].left : pieces[e].right; };
   auto to = [&](int e) { return sides[e] == Side::Above ? pieces[e].right : pieces[e].left; };
@@ -249,6 +261,15 @@ Contours traceContours(const Arrangement& arrangement, TraceScratch& scratch) {
     onStack[v0] = -1;
   }
   return result;
+}
+
+}  // namespace
+
+Contours traceContours(const Arrangement& arrangement, TraceScratch& scratch) {
+  if (const EdgePiece* flat = arrangement.pieces.contiguous()) {
+    return trace(arrangement, FlatPieces{flat, arrangement.pieces.size()}, scratch);
+  }
+  return trace(arrangement, arrangement.pieces, scratch);
 }
 
 }  // namespace roiclip::detail

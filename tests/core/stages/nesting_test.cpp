@@ -72,7 +72,7 @@ TEST(StageNesting, SameResultWithThePiecesFreed) {
     EXPECT_EQ(ring.belowPiece, a.pieces[std::size_t(ring.referencePiece)].below);
   }
   const PolygonSet kept = detail::buildNesting(a, c, stages::kUnitGrid);
-  std::vector<detail::EdgePiece>().swap(a.pieces);
+  detail::EdgePieces().swap(a.pieces);
   std::vector<detail::Side>().swap(a.sides);
   testing::expectSameSet(detail::buildNesting(a, c, stages::kUnitGrid), kept, "pieces freed");
 }

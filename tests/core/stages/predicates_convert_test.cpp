@@ -120,5 +120,41 @@ TEST(ToDoubleWithin, ErrorBoundOnEdgesHalfwayCasesAndRandomValues) {
   }
 }
 
+// The arrangement's 32-byte vertex: every crossing of two grid segments within the grid's range
+// round-trips exactly, the extremes of its range included; beyond them it reports so.
+TEST(PackedPoint, CrossingsAcrossTheGridRangeRoundTrip) {
+  constexpr std::int64_t kMax = Grid::kMaxUnits;
+  const auto roundTrips = [](const XPoint& p) {
+    if (!PackedPoint::representable(p)) return false;
+    const PackedPoint packed(p);
+    const XPoint q = packed.unpack();
+    return q.x == p.x && q.y == p.y && q.w == p.w && packed.w == std::uint64_t(p.w);
+  };
+  std::mt19937_64 rng(7);
+  std::uniform_int_distribution<std::int64_t> coord(-kMax, kMax);
+  std::uniform_int_distribution<int> pick(0, 3);
+  const auto extreme = [&]() {
+    const std::int64_t values[] = {-kMax, kMax, coord(rng), pick(rng) == 0 ? 0 : kMax - 1};
+    return values[pick(rng)];
+  };
+  int crossings = 0;
+  for (int k = 0; k < 200000; ++k) {
+    const IPoint a{extreme(), extreme()}, b{extreme(), extreme()}, c{extreme(), extreme()},
+        d{extreme(), extreme()};
+    XPoint x;
+    if (!segmentCrossing(a, b, c, d, x)) continue;
+    ++crossings;
+    ASSERT_TRUE(roundTrips(x)) << k;
+  }
+  EXPECT_GT(crossings, 10000);
+  // The bound itself: |X| < 2^95, 0 < W < 2^64.
+  const i128 big = i128(1) << 95;
+  EXPECT_TRUE(roundTrips(XPoint(big - 1, -big, i128(1) << 63)));
+  EXPECT_TRUE(roundTrips(XPoint(-7, 5, (i128(1) << 64) - 1)));
+  EXPECT_FALSE(PackedPoint::representable(XPoint(big, 0, 1)));
+  EXPECT_FALSE(PackedPoint::representable(XPoint(0, -big - 1, 1)));
+  EXPECT_FALSE(PackedPoint::representable(XPoint(1, 1, i128(1) << 64)));
+}
+
 }  // namespace
 }  // namespace roiclip::detail
