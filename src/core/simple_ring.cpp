@@ -3,26 +3,33 @@
 //
 // Most contours a vision pipeline clips do not touch themselves. For those the sweep of stage 1
 // finds nothing to split, yet it costs a tree step, a heap step and a piece per vertex. This
-// stage asks first, with a Shamos-Hoey sweep over the ring's monotone chains: a ring splits at its
-// lexicographic turning vertices into chains whose vertices increase lexicographically (x, then
-// y). The sweep visits only the turning vertices, sorted up front (a radix sort of their keys):
-// at each, two chains enter or leave the status. Two chains next to each other in the status are
-// tested lazily, when they stop being neighbours (a pair starts between them, or one of them
-// ends): their vertices since they became neighbours are taken in lexicographic order, each
-// against the other chain's edge that spans it, and must lie strictly on its side (walk()). Each
-// chain keeps how far its vertices have been tested against the chain below and the one above.
-// Before the lexicographically first contact the status is in order, and the two chains that
-// meet there are neighbours just before it (Shamos and Hoey); their walk reaches it when they
-// stop being neighbours, at or after it. For n vertices in c chains: the sort of the c turning
-// vertices (linear, a radix sort, from 64), O(log c) per chain start (O(1) when it starts next to
-// the last one started), and two orientations per vertex (one against each neighbouring chain);
-// no arithmetic beyond exact int64 orientation (every point is a grid point). The test stops at
-// the first contact it finds.
+// stage asks first, with a Shamos-Hoey sweep over the ring's x-monotone chains: a ring splits
+// where its edges turn from running right to running left or back into chains along which x
+// never decreases. A vertical edge belongs to the chain of the edge before it, so a pixel
+// contour's staircases, whose vertical steps run both up and down, stay whole: a contour has a
+// chain pair per x extreme (W1-100k: 556 chains for 101k vertices, where chains increasing in
+// (x, y) order were 18,952). The sweep line is vertical. It visits only the turning vertices,
+// sorted up front (a radix sort of their keys); at one x, the pairs of chains starting there
+// enter the status first (bottom to top), then the pairs ending there leave it. At an x a chain
+// covers a point, or a segment where it has a vertical edge. Two chains next to each other in
+// the status are tested lazily, when they stop being neighbours (a pair enters between them, or
+// one of them ends): at each x where one of them has vertices since they became neighbours, up
+// to the current x, its extent there must lie strictly below the other's (walk()). The gap
+// between two chains is linear between those x, so they do not meet. Before the first contact
+// (in x) the status is in order, and the two chains that meet there are neighbours just before
+// it (Shamos and Hoey); their walk reaches it when they stop being neighbours, at or after it.
+// For n vertices in c chains: the sort of the c turning vertices (linear, a radix sort, from
+// 64), O(log c) per chain start (O(1) when it starts next to the last one started), and two
+// orientations per vertex (one against each neighbouring chain); no arithmetic beyond exact
+// int64 orientation (every point is a grid point). The test stops at the first contact it
+// finds, and answers "not simple" wherever its invariants do not hold (the general path then
+// runs): only a simple ring is ever called simple.
 //
 // Simple here means: the ring's vertices are distinct, consecutive edges meet only at their
 // shared vertex and are not collinear (a straight-on vertex or a spike, which turnsOnce(), asked
 // first, rejects), and no other two edges meet at all.
 #include <algorithm>
+#include <limits>
 #include <utility>
 
 #include <roiclip/error.hpp>
@@ -35,27 +42,60 @@
 namespace roiclip::detail {
 namespace {
 
-// The edge of a chain where the status's search meets point q: its cursor `at` moves on to the
-// first edge that does not end before q. The chain is in the status at q, so it starts before q
-// and ends after it (a chain ending at q would be a second ring vertex on q, rejected before).
-inline ChainCursor edgeAt(const ChainNode& c, const IPoint& q) {
-  while (c.at.left > 0 && c.end(c.at) < q) {
-    c.at = c.next(c.at);
-  }
-  return c.at;
+// A chain's cursor one vertex on; past the last vertex, `left` is -1.
+inline ChainCursor advance(const ChainNode& c, ChainCursor k) {
+  return k.left > 0 ? c.next(k) : ChainCursor{k.j, -1};
 }
 
-// A chain's edge at point q passes below q (q lies strictly to its left).
-struct EdgeBelowPoint {
-  bool operator()(const ChainNode& c, const IPoint& q) const {
-    const ChainCursor e = edgeAt(c, q);
-    return orientInGrid(c.start(e), c.end(e), q) > 0;
+// Where chain c lies at x = q.x, against q: -1 wholly below q, +1 wholly above it, 0 through q.
+// Its cursor `at` moves on to its first vertex at or right of q.x (the sweep's x only grows).
+// At that x the chain covers a vertex, or a vertical edge, or crosses it along an edge. A chain
+// that does not reach q.x is not in the status there: 0, as for a contact.
+inline int sideOf(const ChainNode& c, const IPoint& q) {
+  while (c.end(c.at).x < q.x) {
+    if (c.at.left == 0) return 0;
+    c.at = c.next(c.at);
   }
-  bool operator()(const IPoint& q, const ChainNode& c) const {
-    const ChainCursor e = edgeAt(c, q);
-    return orientInGrid(c.start(e), c.end(e), q) < 0;
+  const IPoint v = c.end(c.at);
+  if (v.x == q.x) {
+    std::int64_t low = v.y, high = v.y;
+    if (c.at.left > 0) {
+      const IPoint w = c.end(c.next(c.at));
+      if (w.x == q.x) {
+        low = std::min(low, w.y);
+        high = std::max(high, w.y);
+      }
+    }
+    return high < q.y ? -1 : low > q.y ? 1 : 0;
   }
+  if (c.at.left == c.edges) return 0;  // the chain starts right of q
+  const int o = orientInGrid(c.start(c.at), v, q);
+  return o > 0 ? -1 : o < 0 ? 1 : 0;
+}
+
+// The status's search: a chain before point q when it lies wholly below q.
+struct ChainBelowPoint {
+  bool operator()(const ChainNode& c, const IPoint& q) const { return sideOf(c, q) < 0; }
+  bool operator()(const IPoint& q, const ChainNode& c) const { return sideOf(c, q) > 0; }
 };
+
+// Moves cursor k of chain c past its vertices at x <= t.
+inline void skipThrough(const ChainNode& c, ChainCursor& k, std::int64_t t) {
+  while (k.left >= 0 && c.end(k).x <= t) k = advance(c, k);
+}
+
+// Takes chain c's vertices at x (one, or the two ends of a vertical edge) from cursor k: their
+// lowest and highest y.
+inline void takeAt(const ChainNode& c, ChainCursor& k, std::int64_t x, std::int64_t& low,
+                   std::int64_t& high) {
+  low = high = c.end(k).y;
+  k = advance(c, k);
+  if (k.left >= 0 && c.end(k).x == x) {
+    low = std::min(low, c.end(k).y);
+    high = std::max(high, c.end(k).y);
+    k = advance(c, k);
+  }
+}
 
 class ChainSweep {
  public:
@@ -76,13 +116,18 @@ class ChainSweep {
     for (std::size_t e = 1; e < events.size(); ++e) {
       if (events[e - 1].key == events[e].key) return false;
     }
-    for (std::size_t e = 0; e < events.size(); ++e) {
-      const ChainEvent& x = events[e];
-      const IPoint p = frame_.point(x.key);
-      if (!s_.chains[std::size_t(x.chain)].started()) {
-        if (!insertPair(x.chain, x.pair, p)) return false;
-      } else if (!removePair(x.chain, x.pair, p)) {
-        return false;
+    // The events at one x (one key's high half): the pairs starting there bottom to top, then
+    // the pairs ending there. A chain that ends at x is still in the status while the pairs
+    // starting at x are placed against what it covers there.
+    for (std::size_t g = 0, h = 0; g < events.size(); g = h) {
+      while (h < events.size() && (events[h].key >> 32) == (events[g].key >> 32)) ++h;
+      for (std::size_t e = g; e < h; ++e) {
+        const ChainEvent& x = events[e];
+        if (startsAt(x) && !insertPair(x.chain, x.pair, frame_.point(x.key))) return false;
+      }
+      for (std::size_t e = g; e < h; ++e) {
+        const ChainEvent& x = events[e];
+        if (!startsAt(x) && !removePair(x.chain, x.pair, frame_.point(x.key))) return false;
       }
     }
     return true;
@@ -101,16 +146,29 @@ class ChainSweep {
     return i == n ? 0 : i < 0 ? n - 1 : i;
   }
 
-  // The ring's maximal runs of lexicographically increasing or decreasing edges, each as a
-  // chain from its smallest vertex, and the events of the turning vertices in lexicographic
-  // order: the chains of a ring are made in ring order, so chain k and the next one meet at
-  // chain k's last vertex in ring order, a turning vertex where both start (chain k runs down
-  // the ring) or both end.
+  // Whether an event's two chains start at its vertex (a leftmost turn), rather than end there.
+  // Chain `chain` shares its last vertex in ring order with `pair`: its leftmost when it runs
+  // backward through the ring.
+  [[nodiscard]] bool startsAt(const ChainEvent& e) const {
+    return s_.chains[std::size_t(e.chain)].step < 0;
+  }
+
+  // The ring's maximal runs of edges going right (x grows) or going left, a vertical edge in the
+  // run of the edge before it, each as a chain from its leftmost vertex, and the events of the
+  // turning vertices: the chains of a ring are made in ring order, so chain k and the next one
+  // meet at chain k's last vertex in ring order, a turning vertex where both start (chain k runs
+  // left) or both end. Of the two chains at a turning vertex at most one has a vertical edge
+  // there (two consecutive edges are not collinear).
   bool splitChains() {
     std::vector<ChainNode>& chains = s_.chains;
     std::vector<ChainEvent>& events = s_.events;
     chains.clear();
     events.clear();
+    // The x direction of edge i -> i + 1: +1, -1, or 0 for a vertical edge.
+    const auto direction = [](const IPoint* points, int n, int i) {
+      const std::int64_t dx = points[after(n, i, 1)].x - points[i].x;
+      return int(dx > 0) - int(dx < 0);
+    };
     // Sized up front. A large ring's chains are counted first: a comb of 10M vertices has 5M
     // chains, which growing the array would copy and fault in again (1.3 s of 3.8 s).
     std::size_t vertices = 0;
@@ -118,49 +176,60 @@ class ChainSweep {
     if (vertices >= kCountChainsFrom) {
       std::size_t turns = 0;
       for (std::size_t r = 0; r < count_; ++r) {
-        const std::vector<IPoint>& ring = rings_[r];
-        for (std::size_t i = 0, n = ring.size(); i < n; ++i) {
-          const std::size_t j = i + 1 == n ? 0 : i + 1, k = j + 1 == n ? 0 : j + 1;
-          turns += std::size_t((ring[i] < ring[j]) != (ring[j] < ring[k]));
+        const IPoint* const points = rings_[r].data();
+        const int n = int(rings_[r].size());
+        int run = 0;
+        for (int i = 0; i < n; ++i) {
+          const int d = direction(points, n, i);
+          turns += std::size_t(d != 0 && d != run);
+          run = d != 0 ? d : run;
         }
       }
-      chains.reserve(turns);
-      events.reserve(turns);
+      chains.reserve(turns + 1);
+      events.reserve(turns + 1);
     }
     for (int r = 0; r < int(count_); ++r) {
       const IPoint* const points = rings_[std::size_t(r)].data();
       const int n = int(rings_[std::size_t(r)].size());
       if (n < 3) return false;
-      const auto up = [&](int i) { return points[i] < points[after(n, i, 1)]; };
-      // A turning vertex to begin at: the first vertex where the direction changes.
+      // The run of the last edge that is not vertical, which the first edges continue when
+      // they are vertical.
+      int run = 0;
+      for (int i = n - 1; i >= 0 && run == 0; --i) run = direction(points, n, i);
+      if (run == 0) return false;
+      // A turning vertex to begin at: the first vertex where the run changes.
       int begin = -1;
-      for (int i = 0, prev = up(n - 1); i < n; ++i) {
-        const bool u = up(i);
-        if (u != bool(prev)) {
+      for (int i = 0; i < n; ++i) {
+        const int d = direction(points, n, i);
+        if (d != 0 && d != run) {
           begin = i;
           break;
         }
-        prev = u;
+        run = d != 0 ? d : run;
       }
-      if (begin < 0) return false;  // no ring of distinct points increases all the way round
+      if (begin < 0) return false;  // no closed ring runs one way all the way round
       const int first = int(chains.size());
       for (int i = begin, done = 0; done < n;) {
-        const bool u = up(i);
+        const int u = direction(points, n, i);  // a run's first edge is not vertical
         const int k = int(chains.size());
         int j = after(n, i, 1), edges = 1;
-        for (++done; done < n && up(j) == u; ++done, ++edges) j = after(n, j, 1);
+        for (++done; done < n; ++done, ++edges) {
+          const int d = direction(points, n, j);
+          if (d != 0 && d != u) break;
+          j = after(n, j, 1);
+        }
         const bool last = done >= n;
         ChainNode& chain = chains.emplace_back();
         chain.ring = r;
         chain.points = points;
         chain.size = n;
-        chain.step = u ? +1 : -1;
-        chain.first = u ? i : j;
+        chain.step = u;
+        chain.first = u > 0 ? i : j;
         chain.edges = edges;
         // Ring order: the previous chain shares vertex i, the next one vertex j.
         const int previous = k == first ? -1 : k - 1, next = last ? first : k + 1;
-        (u ? chain.startPartner : chain.endPartner) = previous;
-        (u ? chain.endPartner : chain.startPartner) = next;
+        (u > 0 ? chain.startPartner : chain.endPartner) = previous;
+        (u > 0 ? chain.endPartner : chain.startPartner) = next;
         // The turning vertex j, shared with the next chain (the ring's first one after its last).
         events.push_back({frame_.key(points[j]), k, next});
         i = j;
@@ -177,38 +246,40 @@ class ChainSweep {
     return true;
   }
 
-  // Chains lo and hi (hi just above lo) have been neighbours in the status since a point where
-  // lo lay strictly below hi. Their vertices after their cursors' edges, up to point t, are
-  // taken in lexicographic order, each tested against the other chain's edge that spans it (the
-  // cursors move on): a vertex of lo must lie strictly below hi's edge, one of hi strictly above
-  // lo's. Then the vertical gap between the two chains, linear between these vertices (sheared
-  // by an infinitesimal so that the lexicographic order is the order in x: orientations do not
-  // change), is positive at each of them, so the chains do not meet up to t. False at a contact.
-  //
-  // Two chains may meet only where both end at one turning vertex (their last edges are
-  // consecutive ring edges); two that start at one share its vertex, which no test here takes
-  // (turnsOnce() has ruled out their first edges overlapping along each other).
-  bool walk(ChainNode& lo, ChainNode& hi, const IPoint& t) const {
+  // Chains lo and hi (hi just above lo) have been neighbours since an x where they lay apart;
+  // their cursors (lo's `up`, hi's `down`) are at their first vertices right of it. Their
+  // vertices from there up to x = t are taken in x order. At each x where one of them has
+  // vertices, its extent there (a vertex, or a vertical edge) must lie strictly below the
+  // other's: the other's vertices there, or its edge across that x. Between two such x the gap
+  // between the chains is linear, so they do not meet up to t. End partners meet at their
+  // shared last vertex, at t: each reaches it from its own side. False at a contact.
+  bool walk(ChainNode& lo, ChainNode& hi, std::int64_t t) const {
     ChainCursor& e = lo.up;
     ChainCursor& f = hi.down;
-    IPoint a = lo.start(e), b = lo.end(e), c = hi.start(f), d = hi.end(f);
     for (;;) {
-      if (b < d) {
-        if (t < b) return true;
-        if (orientInGrid(c, d, b) >= 0) return false;  // b on or above hi's edge
-        if (e.left == 0) return true;                  // lo ends at b, which is t
-        e = lo.next(e);
-        a = b;
-        b = lo.end(e);
-      } else if (d < b) {
-        if (t < d) return true;
-        if (orientInGrid(a, b, d) <= 0) return false;  // d on or below lo's edge
-        if (f.left == 0) return true;                  // hi ends at d, which is t
-        f = hi.next(f);
-        c = d;
-        d = hi.end(f);
-      } else {  // both edges end at one point
-        return e.left == 0 && f.left == 0 && lo.endPartner == int(&hi - s_.chains.data());
+      if (e.left < 0 || f.left < 0) {  // a chain past its last vertex: nothing of it is left
+        constexpr std::int64_t kNone = std::numeric_limits<std::int64_t>::max();
+        return (e.left >= 0 ? lo.end(e).x : f.left >= 0 ? hi.end(f).x : kNone) > t;
+      }
+      // The cursors lie past both chains' first vertices (insertPair()), so each has an edge
+      // ending at its cursor; the one with the smaller x crosses the other's vertex's x.
+      const IPoint b = lo.end(e), d = hi.end(f);
+      if (b.x < d.x) {
+        if (b.x > t) return true;
+        if (orientInGrid(hi.start(f), d, b) >= 0) return false;  // b on or above hi's edge
+        e = advance(lo, e);
+      } else if (d.x < b.x) {
+        if (d.x > t) return true;
+        if (orientInGrid(lo.start(e), b, d) <= 0) return false;  // d on or below lo's edge
+        f = advance(hi, f);
+      } else {  // both have vertices at this x: lo's highest must lie below hi's lowest
+        if (b.x > t) return true;
+        std::int64_t loLow = 0, loHigh = 0, hiLow = 0, hiHigh = 0;
+        takeAt(lo, e, b.x, loLow, loHigh);
+        takeAt(hi, f, b.x, hiLow, hiHigh);
+        if (loHigh < hiLow) continue;
+        return loHigh == hiLow && e.left < 0 && f.left < 0 &&
+               lo.endPartner == int(&hi - s_.chains.data());
       }
     }
   }
@@ -217,30 +288,46 @@ class ChainSweep {
   bool insertPair(int i, int j, const IPoint& p) {
     ChainNode* lo = &s_.chains[std::size_t(i)];
     ChainNode* hi = &s_.chains[std::size_t(j)];
-    for (ChainNode* c : {lo, hi}) {
-      c->down = c->up = c->at = ChainCursor{c->after(c->first), c->edges - 1};
+    for (ChainNode* c : {lo, hi}) c->at = c->down = c->up = ChainCursor{c->first, c->edges};
+    // What the pair covers at p.x: p, and the other end of a vertical first edge. The chain
+    // going down from p lies below the other; else their first edges turn at p.
+    const IPoint a = lo->end(lo->next(lo->at)), b = hi->end(hi->next(hi->at));
+    std::int64_t low = p.y, high = p.y;
+    if (a.x == p.x || b.x == p.x) {
+      if (a.x == p.x && b.x == p.x) return false;  // two vertical edges (turnsOnce() rejects)
+      const IPoint v = a.x == p.x ? a : b;
+      const ChainNode* vertical = a.x == p.x ? lo : hi;
+      if ((v.y < p.y) != (vertical == lo)) std::swap(lo, hi);
+      low = std::min(low, v.y);
+      high = std::max(high, v.y);
+    } else {
+      const int turn = orientInGrid(p, a, b);
+      if (turn == 0) return false;  // overlapping first edges
+      if (turn < 0) std::swap(lo, hi);
     }
-    const int turn = orientInGrid(p, lo->end(lo->at), hi->end(hi->at));
-    if (turn == 0) return false;  // overlapping first edges
-    if (turn < 0) std::swap(lo, hi);
-    // The first chain whose edge at p does not pass below p.
+    const IPoint bottom{p.x, low}, top{p.x, high};
+    // The first chain that does not lie wholly below the pair's bottom.
     ChainNode* above = nullptr;
     Status::iterator at;
-    if (!nearFinger(p, above)) {
-      at = status_.lower_bound(p, EdgeBelowPoint{});
+    if (!nearFinger(bottom, above)) {
+      at = status_.lower_bound(bottom, ChainBelowPoint{});
       above = at == status_.end() ? nullptr : &*at;
     } else {
       at = above != nullptr ? status_.iterator_to(*above) : status_.end();
     }
     ChainNode* below = above != nullptr ? above->below : top_;
-    // The two neighbours stop being neighbours at p. The chain below passes strictly below p
-    // (the search's order), the one above must pass strictly above it. A chain that had no
-    // neighbour on the new chains' side has its vertices up to p tested against none: its
-    // cursor moves on to p untested.
-    if (below != nullptr && above != nullptr && !walk(*below, *above, p)) return false;
-    if (above != nullptr && !EdgeBelowPoint{}(p, *above)) return false;  // p on its edge
-    if (below != nullptr && above == nullptr) below->up = edgeAt(*below, p);
-    if (above != nullptr && below == nullptr) above->down = above->at;  // set by edgeAt()
+    // The pair's neighbours must lie wholly below and above what it covers at p.x; the two
+    // stop being neighbours at p.x.
+    if (above != nullptr && sideOf(*above, top) <= 0) return false;
+    if (below != nullptr && sideOf(*below, bottom) >= 0) return false;
+    if (below != nullptr && above != nullptr && !walk(*below, *above, p.x)) return false;
+    // The new neighbours lie apart at p.x: each is tested from its first vertex right of it.
+    if (below != nullptr) skipThrough(*below, below->up, p.x);
+    if (above != nullptr) skipThrough(*above, above->down, p.x);
+    for (ChainNode* c : {lo, hi}) {
+      skipThrough(*c, c->down, p.x);
+      skipThrough(*c, c->up, p.x);
+    }
     status_.insert_before(at, *lo);
     status_.insert_before(at, *hi);
     finger_ = hi;
@@ -250,7 +337,7 @@ class ChainSweep {
     hi->above = above;
     if (below != nullptr) below->above = lo;
     (above != nullptr ? above->below : top_) = hi;
-    // A ring's first pair of chains starts at its smallest vertex: what lies below it there.
+    // A ring's first pair of chains covers its smallest vertex: what lies below it there.
     if (below_ != nullptr && (*below_)[std::size_t(lo->ring)] == kNotReached) {
       (*below_)[std::size_t(lo->ring)] = below != nullptr ? int(below - s_.chains.data()) : -1;
       s_.reached.push_back(lo->ring);
@@ -258,24 +345,23 @@ class ChainSweep {
     return true;
   }
 
-  // The first chain whose edge at p does not pass below p (null: none), when it lies within
-  // a few steps of the last pair inserted (finger_) along the status: chains often start in
-  // order up a side (a comb's teeth start up one line), and then the tree's search, a cache miss
-  // a level on a large status, is not needed. False when it lies further.
-  bool nearFinger(const IPoint& p, ChainNode*& above) const {
+  // The first chain that does not lie wholly below q (null: none), when it lies within a few
+  // steps of the last pair inserted (finger_) along the status: chains often start in order up
+  // a side (a comb's teeth start up one line), and then the tree's search, a cache miss a level
+  // on a large status, is not needed. False when it lies further.
+  bool nearFinger(const IPoint& q, ChainNode*& above) const {
     constexpr int kSteps = 4;
-    const EdgeBelowPoint passesBelow;
     ChainNode* f = finger_;
     if (f == nullptr) return false;
-    if (passesBelow(*f, p)) {  // up from the finger to the first that does not pass below
+    if (sideOf(*f, q) < 0) {  // up from the finger to the first that does not lie below q
       ChainNode* g = f->above;
-      for (int k = 0; g != nullptr && passesBelow(*g, p); ++k, g = g->above) {
+      for (int k = 0; g != nullptr && sideOf(*g, q) < 0; ++k, g = g->above) {
         if (k == kSteps) return false;
       }
       above = g;
       return true;
     }
-    for (int k = 0; f->below != nullptr && !passesBelow(*f->below, p); ++k, f = f->below) {
+    for (int k = 0; f->below != nullptr && sideOf(*f->below, q) >= 0; ++k, f = f->below) {
       if (k == kSteps) return false;
     }
     above = f;
@@ -283,7 +369,7 @@ class ChainSweep {
   }
 
   // Two chains end at their shared (turning) vertex p: they leave the status, next to each
-  // other, once the vertices of each neighbouring pair are tested up to p.
+  // other, once the vertices of each neighbouring pair are tested up to p.x.
   bool removePair(int i, int j, const IPoint& p) {
     ChainNode* lo = &s_.chains[std::size_t(i)];
     ChainNode* hi = &s_.chains[std::size_t(j)];
@@ -291,9 +377,9 @@ class ChainSweep {
     if (lo->above != hi) return false;  // something passes between them into their end
     ChainNode* below = lo->below;
     ChainNode* above = hi->above;
-    if (below != nullptr && !walk(*below, *lo, p)) return false;
-    if (!walk(*lo, *hi, p)) return false;
-    if (above != nullptr && !walk(*hi, *above, p)) return false;
+    if (below != nullptr && !walk(*below, *lo, p.x)) return false;
+    if (!walk(*lo, *hi, p.x)) return false;
+    if (above != nullptr && !walk(*hi, *above, p.x)) return false;
     if (below != nullptr) below->above = above;
     (above != nullptr ? above->below : top_) = below;
     status_.erase(status_.iterator_to(*lo));

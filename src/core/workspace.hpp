@@ -80,18 +80,17 @@ struct StatusNode {
   StatusNode* above = nullptr;  ///< the node next above it, null at the top
 };
 
-/// One edge of a monotone chain, as a place along it: the edge that ends at ring index `j`, with
-/// `left` edges of the chain after it.
+/// A vertex of a chain, as a place along it: ring index `j`, with `left` vertices of the chain
+/// after it (-1: past its last vertex).
 struct ChainCursor {
   int j = 0;
   int left = -1;
 };
-/// A monotone chain of a ring in the simple-ring test (simple_ring.cpp): its edges run from ring
-/// index `first` (its smallest vertex) `edges` steps in direction `step`, lexicographically
-/// increasing; its status links; and three places along it, each only moving on: `down` and `up`,
-/// how far its vertices have been tested against the chain below and the one above it (the end
-/// of the cursor's edge is the first vertex not tested yet), and `at`, the edge where the status's
-/// search last located a point against it.
+/// An x-monotone chain of a ring in the simple-ring test (simple_ring.cpp): its edges run from
+/// ring index `first` (its leftmost vertex) `edges` steps in direction `step`, x never
+/// decreasing (vertical edges inside); its status links; and three places along it, each only
+/// moving on: `down` and `up`, its first vertex not yet tested against the chain below and the
+/// one above it, and `at`, where the status's search last located an x against it.
 struct ChainNode {
   StatusHook hook;
   ChainNode* below = nullptr;
@@ -99,14 +98,13 @@ struct ChainNode {
   const IPoint* points = nullptr;  ///< its ring's vertices (the sweep's hot path reads them here)
   int size = 0;                    ///< and their number
   int ring = 0;                    ///< which ring of the set
-  int step = 0;                    ///< +1 when the chain runs forward through the ring, -1 backward
-  int first = 0;                   ///< ring index of its first (smallest) vertex
+  int step = 0;   ///< +1 when the chain runs forward through the ring (x grows), -1 backward
+  int first = 0;  ///< ring index of its first (leftmost) vertex, a turning vertex
   int edges = 0;
   /// The chains it shares its first and its last vertex with (turning vertices of the ring).
   int startPartner = -1, endPartner = -1;
   ChainCursor down, up;
   mutable ChainCursor at;  ///< moved on by the status's search (a const comparison)
-  [[nodiscard]] bool started() const { return up.left >= 0; }
   /// The ring index one step along the chain from i, and one step back.
   [[nodiscard]] int after(int i) const { return wrap(i + step); }
   [[nodiscard]] int before(int i) const { return wrap(i - step); }
@@ -115,9 +113,11 @@ struct ChainNode {
     if (__builtin_expect(unsigned(i) < unsigned(size), 1)) return i;
     return i < 0 ? size - 1 : 0;
   }
+  /// The vertex before a cursor's (not at the first vertex), and the cursor's own: the edge
+  /// that ends at the cursor.
   [[nodiscard]] IPoint start(ChainCursor c) const { return points[before(c.j)]; }
   [[nodiscard]] IPoint end(ChainCursor c) const { return points[c.j]; }
-  /// The next edge's cursor.
+  /// The next vertex's cursor.
   [[nodiscard]] ChainCursor next(ChainCursor c) const { return {after(c.j), c.left - 1}; }
   /// The status is built by position (insert_before), never by comparing two nodes: the
   /// comparison the tree's type asks for.

@@ -64,6 +64,30 @@ bool bruteForceSimple(const Ring& r) {
   return true;
 }
 
+// A set of rings, by the definition: each ring simple, no two rings meet.
+bool bruteForceSetSimple(const std::vector<Ring>& set) {
+  for (std::size_t a = 0; a < set.size(); ++a) {
+    if (!bruteForceSimple(set[a])) return false;
+    for (std::size_t b = 0; b < a; ++b) {
+      for (std::size_t i = 0; i < set[a].size(); ++i) {
+        for (std::size_t j = 0; j < set[b].size(); ++j) {
+          if (closedSegmentsMeet(set[a][i], set[a][(i + 1) % set[a].size()], set[b][j],
+                                 set[b][(j + 1) % set[b].size()])) {
+            return false;
+          }
+        }
+      }
+    }
+  }
+  return true;
+}
+
+std::string describe(const Ring& r) {
+  std::string s;
+  for (const IPoint& p : r) s += " (" + std::to_string(p.x) + "," + std::to_string(p.y) + ")";
+  return s;
+}
+
 bool chainSweepSimple(const Ring& r) {
   detail::ChainScratch scratch;
   return detail::ringIsSimple(r, scratch);
@@ -401,9 +425,7 @@ TEST(StageSimpleRing, AgreesWithBruteForceOnSmallDegenerateRings) {
     if (expected) {
       ASSERT_TRUE(detail::turnsOnce(r)) << "trial " << trial;  // Hopf: necessary
     }
-    std::string ring;
-    for (const IPoint& p : r) ring += " (" + std::to_string(p.x) + "," + std::to_string(p.y) + ")";
-    ASSERT_EQ(chainSweepSimple(r), expected) << "trial " << trial << ":" << ring;
+    ASSERT_EQ(chainSweepSimple(r), expected) << "trial " << trial << ":" << describe(r);
     simple += expected ? 1 : 0;
     ++total;
   }
@@ -429,18 +451,7 @@ TEST(StageSimpleRing, SetsAgreeWithBruteForceOnSmallDegenerateRings) {
       }
       while (r.size() > 1 && r.back() == r.front()) r.pop_back();
     }
-    bool expected = true;
-    for (std::size_t a = 0; a < set.size() && expected; ++a) {
-      expected = bruteForceSimple(set[a]);
-      for (std::size_t b = 0; b < a && expected; ++b) {
-        for (std::size_t i = 0; i < set[a].size() && expected; ++i) {
-          for (std::size_t j = 0; j < set[b].size() && expected; ++j) {
-            expected = !closedSegmentsMeet(set[a][i], set[a][(i + 1) % set[a].size()], set[b][j],
-                                           set[b][(j + 1) % set[b].size()]);
-          }
-        }
-      }
-    }
+    const bool expected = bruteForceSetSimple(set);
     if (std::any_of(set.begin(), set.end(), [](const Ring& r) { return r.size() < 3; })) continue;
     ASSERT_EQ(detail::ringsAreSimple(set, scratch), expected) << "trial " << trial;
     simple += expected ? 1 : 0;
@@ -448,6 +459,125 @@ TEST(StageSimpleRing, SetsAgreeWithBruteForceOnSmallDegenerateRings) {
   }
   EXPECT_GT(simple, 100);  // both verdicts are exercised
   EXPECT_LT(simple, total - 1000);
+}
+
+// A closed lattice walk of `moves` steps on a small grid: pixel directions only (axis-parallel
+// and diagonal, as findContours traces), consecutive steps never collinear, closed by one or two
+// straight moves back to the start. Vertical steps run both up and down along one x-monotone
+// chain, which the chain sweep keeps whole; touches at vertical edges are common.
+Ring pixelWalk(std::mt19937& rng, int moves, int span) {
+  static const IPoint kDirections[] = {{1, 0},  {1, 1},   {0, 1},  {-1, 1},
+                                       {-1, 0}, {-1, -1}, {0, -1}, {1, -1}};
+  Ring r = {{0, 0}};
+  int previous = -1;
+  for (int m = 0; m < moves; ++m) {
+    int d = int(rng() % 8);
+    if (previous >= 0 && (d % 4) == (previous % 4)) d = (d + 1 + int(rng() % 3)) % 8;
+    const std::int64_t length = 1 + std::int64_t(rng() % std::uint32_t(span));
+    const IPoint q{r.back().x + kDirections[d].x * length, r.back().y + kDirections[d].y * length};
+    r.push_back(q);
+    previous = d;
+  }
+  r.push_back({0, r.back().y});  // back along x, then along y to the start
+  // Drop repeated points and straight-on vertices (what the snapping leaves).
+  Ring out;
+  for (const IPoint& q : r) {
+    if (!out.empty() && out.back() == q) continue;
+    while (out.size() >= 2 && turn(out[out.size() - 2], out.back(), q) == 0 &&
+           within(out.back().x, out[out.size() - 2].x, q.x) &&
+           within(out.back().y, out[out.size() - 2].y, q.y)) {
+      out.pop_back();
+    }
+    out.push_back(q);
+  }
+  while (out.size() > 1 && out.back() == out.front()) out.pop_back();
+  return out;
+}
+
+// Pixel-direction lattice walks: the verdict against brute force. Every edge is axis-parallel
+// or diagonal, and vertical edges run up and down inside one chain, so contacts at vertical
+// edges (a vertex on one, two overlapping, two chains ending on one x) are what is tested.
+TEST(StageSimpleRing, PixelWalksAgreeWithBruteForce) {
+  std::mt19937 rng(20261206);
+  int simple = 0, total = 0;
+  for (int trial = 0; trial < 30000; ++trial) {
+    const Ring r = pixelWalk(rng, 3 + int(rng() % 10), 1 + int(rng() % 3));
+    if (r.size() < 3) continue;
+    const bool expected = bruteForceSimple(r);
+    ASSERT_EQ(chainSweepSimple(r), expected) << "trial " << trial << ":" << describe(r);
+    Ring reversed(r.rbegin(), r.rend());
+    ASSERT_EQ(chainSweepSimple(reversed), expected) << "trial " << trial << ", reversed";
+    simple += expected ? 1 : 0;
+    ++total;
+  }
+  EXPECT_GT(simple, total / 20);  // both verdicts are exercised
+  EXPECT_LT(simple, total - 1000);
+}
+
+// Sets of two or three pixel walks, moved apart by a few units: ringsAreSimple() against the
+// definition. A ring's vertical edge against another's vertex or vertical edge, and chains of
+// different rings starting and ending on one x, are common.
+TEST(StageSimpleRing, SetsOfPixelWalksAgreeWithBruteForce) {
+  std::mt19937 rng(20261207);
+  detail::ChainScratch scratch;
+  int simple = 0, total = 0;
+  for (int trial = 0; trial < 20000; ++trial) {
+    std::vector<Ring> set(2 + rng() % 2);
+    for (Ring& r : set) {
+      r = pixelWalk(rng, 3 + int(rng() % 6), 1 + int(rng() % 2));
+      const IPoint shift{std::int64_t(rng() % 7) - 3, std::int64_t(rng() % 7) - 3};
+      for (IPoint& q : r) q = {q.x + shift.x, q.y + shift.y};
+    }
+    if (std::any_of(set.begin(), set.end(), [](const Ring& r) { return r.size() < 3; })) continue;
+    const bool expected = bruteForceSetSimple(set);
+    ASSERT_EQ(detail::ringsAreSimple(set, scratch), expected) << "trial " << trial;
+    simple += expected ? 1 : 0;
+    ++total;
+  }
+  EXPECT_GT(simple, 300);  // both verdicts are exercised
+  EXPECT_LT(simple, total - 1000);
+}
+
+// The chains are x-monotone with vertical edges inside: a ring splits only at its x extremes.
+// A digital circle traced as findContours(CHAIN_APPROX_SIMPLE) would trace it (horizontal,
+// vertical and diagonal runs; vertical steps up on one side and down on the other) is two
+// chains, where chains increasing in (x, y) order broke at every downward vertical step.
+TEST(StageSimpleRing, PixelStaircasesSplitOnlyAtXExtremes) {
+  // The boundary of the pixels (x, y) with x^2 + y^2 <= 60^2, counter-clockwise, as the
+  // column tops and bottoms at each x.
+  const int radius = 60;
+  std::vector<std::int64_t> top;
+  for (int x = -radius; x <= radius; ++x) {
+    top.push_back(std::int64_t(std::floor(std::sqrt(double(radius * radius - x * x)))));
+  }
+  Ring steps;  // lower half left to right, then upper half right to left
+  for (int x = -radius; x <= radius; ++x) {
+    steps.push_back({x, -top[std::size_t(x + radius)]});
+    steps.push_back({x + 1, -top[std::size_t(x + radius)]});
+  }
+  for (int x = radius; x >= -radius; --x) {
+    steps.push_back({x + 1, top[std::size_t(x + radius)] + 1});
+    steps.push_back({x, top[std::size_t(x + radius)] + 1});
+  }
+  Ring ring;
+  for (const IPoint& q : steps) {
+    if (!ring.empty() && ring.back() == q) continue;
+    while (ring.size() >= 2 && turn(ring[ring.size() - 2], ring.back(), q) == 0) ring.pop_back();
+    ring.push_back(q);
+  }
+  while (ring.size() >= 3 && turn(ring[ring.size() - 2], ring.back(), ring.front()) == 0) {
+    ring.pop_back();
+  }
+  ASSERT_TRUE(bruteForceSimple(ring)) << describe(ring);
+  detail::ChainScratch scratch;
+  ASSERT_TRUE(detail::ringIsSimple(ring, scratch));
+  EXPECT_EQ(scratch.chains.size(), 2u) << ring.size() << " vertices";
+  EXPECT_GT(ring.size(), 100u);
+  // The same ring as a hole of a square around it: four chains, nested.
+  const std::vector<Ring> set = {{{-100, -100}, {100, -100}, {100, 100}, {-100, 100}},
+                                 Ring(ring.rbegin(), ring.rend())};
+  ASSERT_TRUE(detail::ringsAreSimple(set, scratch));
+  EXPECT_EQ(scratch.chains.size(), 4u);
 }
 
 // Star-shaped rings (sorted random angles, random radii, rounded): mostly simple, sometimes a
