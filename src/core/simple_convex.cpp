@@ -114,8 +114,8 @@ unsigned classifyEach(const CcwRing& s, const SideLines& sides, WeilerScratch& w
 // classifyEach(), or takeKnown() where the grouping knows the vertices.
 unsigned classifyVertices(const CcwRing& s, const SideLines& sides, WeilerScratch& w,
                           unsigned& anyOn, const KnownSides& known) {
-  w.left.resize(std::size_t(s.size()));
-  w.onLine.resize(std::size_t(s.size()));
+  w.left.resize(std::size_t(s.size()), boost::container::default_init);
+  w.onLine.resize(std::size_t(s.size()), boost::container::default_init);
   if (known.inside || known.left != nullptr) return takeKnown(s, sides, w, anyOn, known);
   return withSideCount(sides, [&](auto k) { return classifyEach<k()>(s, sides, w, anyOn); });
 }
