@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <iterator>
 #include <limits>
 #include <string>
 #include <type_traits>
@@ -38,15 +39,39 @@ const char* depthName(int depth) {
   }
 }
 
+// Integer pairs x0 y0 x1 y1 ... read as points, a random-access range: a vector takes them in
+// one allocation, each point built in place (resize() and a loop zero-filled them first: W1-100k
+// 1.9% of its instructions).
+struct IntPairPoints {
+  using iterator_category = std::random_access_iterator_tag;
+  using value_type = Point;
+  using difference_type = std::ptrdiff_t;
+  using pointer = void;
+  using reference = Point;
+  const int* v;
+  Point operator*() const { return Point(double(v[0]), double(v[1])); }
+  IntPairPoints& operator++() {
+    v += 2;
+    return *this;
+  }
+  IntPairPoints& operator--() {
+    v -= 2;
+    return *this;
+  }
+  IntPairPoints& operator+=(difference_type k) {
+    v += 2 * k;
+    return *this;
+  }
+  difference_type operator-(const IntPairPoints& o) const { return (v - o.v) / 2; }
+  bool operator==(const IntPairPoints& o) const { return v == o.v; }
+  bool operator!=(const IntPairPoints& o) const { return v != o.v; }
+};
+
 // The n points x0 y0 x1 y1 ... at v (integer coordinates are always finite).
 template <typename T>
 void appendPoints(const T* v, std::size_t n, std::size_t index, Path& out) {
-  if constexpr (std::is_integral_v<T>) {
-    // Every int is a double: sized once and written in a loop the compiler vectorizes.
-    const std::size_t base = out.size();
-    out.resize(base + n);
-    Point* const p = out.data() + base;
-    for (std::size_t i = 0; i < n; ++i) p[i] = Point(double(v[2 * i]), double(v[2 * i + 1]));
+  if constexpr (std::is_same_v<T, int>) {
+    out.insert(out.end(), IntPairPoints{v}, IntPairPoints{v + 2 * n});
   } else {
     out.reserve(n);
     for (std::size_t i = 0; i < n; ++i) {
