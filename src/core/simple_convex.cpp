@@ -276,8 +276,9 @@ bool walkCrossings(const CcwRing& c, RingAt ringAt, Piece piece, WeilerScratch& 
   std::sort(alongC.begin(), alongC.end(), [&](int u, int v) {
     const Crossing &a = crossings[std::size_t(u)], &b = crossings[std::size_t(v)];
     if (a.side != b.side) return a.side < b.side;
-    if (equalInBox(a.x, b.x)) return !a.entering && b.entering;
-    return beforeAlong(c[a.side], c[(a.side + 1) % m], a.x, b.x);
+    const int order = compareInBox(a.x, b.x);  // one exact comparison for both questions
+    if (order == 0) return !a.entering && b.entering;
+    return c[a.side] < c[(a.side + 1) % m] ? order < 0 : order > 0;
   });
   std::vector<int>& rankOnC = w.rankOnC;
   rankOnC.resize(kCount);
