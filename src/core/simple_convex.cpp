@@ -29,10 +29,11 @@ namespace {
 
 using Crossing = BoundaryCrossing;
 
-// Orders two points on the segment a -> b by their distance from a.
-bool beforeAlong(IPoint a, IPoint b, const XPoint& p, const XPoint& q) {
+// Two points on the segment a -> b by their distance from a: -1 when p comes first, 0 at one
+// point, +1 when q does.
+int orderAlong(IPoint a, IPoint b, const XPoint& p, const XPoint& q) {
   const int c = compareInBox(p, q);
-  return a < b ? c < 0 : c > 0;
+  return a < b ? c : -c;
 }
 
 constexpr std::size_t kBoxFirstUpTo = 512;  // vertices
@@ -215,8 +216,9 @@ bool appendCrossings(const CcwRing& s, int ring, const CcwRing& c, unsigned all,
       w.crossings.push_back(x);
     }
     if (w.crossings.size() - before > 1) {
-      std::sort(w.crossings.begin() + std::ptrdiff_t(before), w.crossings.end(),
-                [&](const Crossing& u, const Crossing& v) { return beforeAlong(p, q, u.x, v.x); });
+      std::sort(
+          w.crossings.begin() + std::ptrdiff_t(before), w.crossings.end(),
+          [&](const Crossing& u, const Crossing& v) { return orderAlong(p, q, u.x, v.x) < 0; });
     }
   }
   return true;
@@ -276,9 +278,9 @@ bool walkCrossings(const CcwRing& c, RingAt ringAt, Piece piece, WeilerScratch& 
   std::sort(alongC.begin(), alongC.end(), [&](int u, int v) {
     const Crossing &a = crossings[std::size_t(u)], &b = crossings[std::size_t(v)];
     if (a.side != b.side) return a.side < b.side;
-    const int order = compareInBox(a.x, b.x);  // one exact comparison for both questions
-    if (order == 0) return !a.entering && b.entering;
-    return c[a.side] < c[(a.side + 1) % m] ? order < 0 : order > 0;
+    const int order = orderAlong(c[a.side], c[(a.side + 1) % m], a.x, b.x);
+    if (order == 0) return !a.entering && b.entering;  // one point: leaving first
+    return order < 0;
   });
   std::vector<int>& rankOnC = w.rankOnC;
   rankOnC.resize(kCount);

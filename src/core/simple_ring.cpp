@@ -47,6 +47,20 @@ inline ChainCursor advance(const ChainNode& c, ChainCursor k) {
   return k.left > 0 ? c.next(k) : ChainCursor{k.j, -1};
 }
 
+// Chain c's vertices at x from cursor k, which is at the first of them (one, or the two ends
+// of a vertical edge): their lowest and highest y, and the cursor past them.
+inline ChainCursor extentAt(const ChainNode& c, ChainCursor k, std::int64_t x, std::int64_t& low,
+                            std::int64_t& high) {
+  low = high = c.end(k).y;
+  k = advance(c, k);
+  if (k.left >= 0 && c.end(k).x == x) {
+    low = std::min(low, c.end(k).y);
+    high = std::max(high, c.end(k).y);
+    k = advance(c, k);
+  }
+  return k;
+}
+
 // Where chain c lies at x = q.x, against q: -1 wholly below q, +1 wholly above it, 0 through q.
 // Its cursor `at` moves on to its first vertex at or right of q.x (the sweep's x only grows).
 // At that x the chain covers a vertex, or a vertical edge, or crosses it along an edge. A chain
@@ -58,14 +72,8 @@ inline int sideOf(const ChainNode& c, const IPoint& q) {
   }
   const IPoint v = c.end(c.at);
   if (v.x == q.x) {
-    std::int64_t low = v.y, high = v.y;
-    if (c.at.left > 0) {
-      const IPoint w = c.end(c.next(c.at));
-      if (w.x == q.x) {
-        low = std::min(low, w.y);
-        high = std::max(high, w.y);
-      }
-    }
+    std::int64_t low = 0, high = 0;
+    extentAt(c, c.at, q.x, low, high);
     return high < q.y ? -1 : low > q.y ? 1 : 0;
   }
   if (c.at.left == c.edges) return 0;  // the chain starts right of q
@@ -82,19 +90,6 @@ struct ChainBelowPoint {
 // Moves cursor k of chain c past its vertices at x <= t.
 inline void skipThrough(const ChainNode& c, ChainCursor& k, std::int64_t t) {
   while (k.left >= 0 && c.end(k).x <= t) k = advance(c, k);
-}
-
-// Takes chain c's vertices at x (one, or the two ends of a vertical edge) from cursor k: their
-// lowest and highest y.
-inline void takeAt(const ChainNode& c, ChainCursor& k, std::int64_t x, std::int64_t& low,
-                   std::int64_t& high) {
-  low = high = c.end(k).y;
-  k = advance(c, k);
-  if (k.left >= 0 && c.end(k).x == x) {
-    low = std::min(low, c.end(k).y);
-    high = std::max(high, c.end(k).y);
-    k = advance(c, k);
-  }
 }
 
 class ChainSweep {
@@ -275,8 +270,8 @@ class ChainSweep {
       } else {  // both have vertices at this x: lo's highest must lie below hi's lowest
         if (b.x > t) return true;
         std::int64_t loLow = 0, loHigh = 0, hiLow = 0, hiHigh = 0;
-        takeAt(lo, e, b.x, loLow, loHigh);
-        takeAt(hi, f, b.x, hiLow, hiHigh);
+        e = extentAt(lo, e, b.x, loLow, loHigh);
+        f = extentAt(hi, f, b.x, hiLow, hiHigh);
         if (loHigh < hiLow) continue;
         return loHigh == hiLow && e.left < 0 && f.left < 0 &&
                lo.endPartner == int(&hi - s_.chains.data());

@@ -93,6 +93,58 @@ bool chainSweepSimple(const Ring& r) {
   return detail::ringIsSimple(r, scratch);
 }
 
+// The verdict on `trials` rings from `make` (rings under three vertices are skipped) against
+// brute force, each ring also reversed; a simple ring turns once (Hopf: necessary). Both
+// verdicts must occur: more than total / `fewest` rings simple, at least 1,000 not.
+template <class Make>
+void expectRingVerdicts(Make make, int trials, int fewest) {
+  int simple = 0, total = 0;
+  for (int trial = 0; trial < trials; ++trial) {
+    const Ring r = make();
+    if (r.size() < 3) continue;
+    const bool expected = bruteForceSimple(r);
+    if (expected) {
+      ASSERT_TRUE(detail::turnsOnce(r)) << "trial " << trial;
+    }
+    ASSERT_EQ(chainSweepSimple(r), expected) << "trial " << trial << ":" << describe(r);
+    const Ring reversed(r.rbegin(), r.rend());
+    ASSERT_EQ(chainSweepSimple(reversed), expected) << "trial " << trial << ", reversed";
+    simple += expected ? 1 : 0;
+    ++total;
+  }
+  EXPECT_GT(simple, total / fewest);
+  EXPECT_LT(simple, total - 1000);
+}
+
+// The same for sets of rings from `make`: ringsAreSimple() against bruteForceSetSimple(), more
+// than `fewestSimple` sets simple and at least 1,000 not.
+template <class Make>
+void expectSetVerdicts(Make make, int trials, int fewestSimple) {
+  detail::ChainScratch scratch;
+  int simple = 0, total = 0;
+  for (int trial = 0; trial < trials; ++trial) {
+    const std::vector<Ring> set = make();
+    if (std::any_of(set.begin(), set.end(), [](const Ring& r) { return r.size() < 3; })) continue;
+    const bool expected = bruteForceSetSimple(set);
+    ASSERT_EQ(detail::ringsAreSimple(set, scratch), expected) << "trial " << trial;
+    simple += expected ? 1 : 0;
+    ++total;
+  }
+  EXPECT_GT(simple, fewestSimple);
+  EXPECT_LT(simple, total - 1000);
+}
+
+// A random ring of up to `n` points on a 6 x 6 grid, consecutive repeats dropped.
+Ring smallGridRing(std::mt19937& rng, int n) {
+  Ring r;
+  for (int i = 0; i < n; ++i) {
+    const IPoint p{std::int64_t(rng() % 6), std::int64_t(rng() % 6)};
+    if (r.empty() || p != r.back()) r.push_back(p);
+  }
+  while (r.size() > 1 && r.back() == r.front()) r.pop_back();
+  return r;
+}
+
 Path toPath(const Ring& r) {
   Path p;
   for (const IPoint& q : r) p.emplace_back(double(q.x), double(q.y));
@@ -411,26 +463,7 @@ TEST(StageSimpleRing, SetsOfRingsNestLikeTheGeneralPath) {
 // common, so both verdicts occur often.
 TEST(StageSimpleRing, AgreesWithBruteForceOnSmallDegenerateRings) {
   std::mt19937 rng(20261202);
-  int simple = 0, total = 0;
-  for (int trial = 0; trial < 40000; ++trial) {
-    const int n = 3 + int(rng() % 8);
-    Ring r;
-    for (int i = 0; i < n; ++i) {
-      const IPoint p{std::int64_t(rng() % 6), std::int64_t(rng() % 6)};
-      if (r.empty() || p != r.back()) r.push_back(p);
-    }
-    while (r.size() > 1 && r.back() == r.front()) r.pop_back();
-    if (r.size() < 3) continue;
-    const bool expected = bruteForceSimple(r);
-    if (expected) {
-      ASSERT_TRUE(detail::turnsOnce(r)) << "trial " << trial;  // Hopf: necessary
-    }
-    ASSERT_EQ(chainSweepSimple(r), expected) << "trial " << trial << ":" << describe(r);
-    simple += expected ? 1 : 0;
-    ++total;
-  }
-  EXPECT_GT(simple, total / 50);  // both verdicts are exercised
-  EXPECT_LT(simple, total - 1000);
+  expectRingVerdicts([&] { return smallGridRing(rng, 3 + int(rng() % 8)); }, 40000, 50);
 }
 
 // Sets of two or three small random rings on a 6 x 6 grid: ringsAreSimple() against the
@@ -439,26 +472,13 @@ TEST(StageSimpleRing, AgreesWithBruteForceOnSmallDegenerateRings) {
 // one ring's.
 TEST(StageSimpleRing, SetsAgreeWithBruteForceOnSmallDegenerateRings) {
   std::mt19937 rng(20261203);
-  detail::ChainScratch scratch;
-  int simple = 0, total = 0;
-  for (int trial = 0; trial < 20000; ++trial) {
-    std::vector<Ring> set(2 + rng() % 2);
-    for (Ring& r : set) {
-      const int n = 3 + int(rng() % 4);
-      for (int i = 0; i < n; ++i) {
-        const IPoint p{std::int64_t(rng() % 6), std::int64_t(rng() % 6)};
-        if (r.empty() || p != r.back()) r.push_back(p);
-      }
-      while (r.size() > 1 && r.back() == r.front()) r.pop_back();
-    }
-    const bool expected = bruteForceSetSimple(set);
-    if (std::any_of(set.begin(), set.end(), [](const Ring& r) { return r.size() < 3; })) continue;
-    ASSERT_EQ(detail::ringsAreSimple(set, scratch), expected) << "trial " << trial;
-    simple += expected ? 1 : 0;
-    ++total;
-  }
-  EXPECT_GT(simple, 100);  // both verdicts are exercised
-  EXPECT_LT(simple, total - 1000);
+  expectSetVerdicts(
+      [&] {
+        std::vector<Ring> set(2 + rng() % 2);
+        for (Ring& r : set) r = smallGridRing(rng, 3 + int(rng() % 4));
+        return set;
+      },
+      20000, 100);
 }
 
 // A closed lattice walk of `moves` steps on a small grid: pixel directions only (axis-parallel
@@ -499,19 +519,8 @@ Ring pixelWalk(std::mt19937& rng, int moves, int span) {
 // edges (a vertex on one, two overlapping, two chains ending on one x) are what is tested.
 TEST(StageSimpleRing, PixelWalksAgreeWithBruteForce) {
   std::mt19937 rng(20261206);
-  int simple = 0, total = 0;
-  for (int trial = 0; trial < 30000; ++trial) {
-    const Ring r = pixelWalk(rng, 3 + int(rng() % 10), 1 + int(rng() % 3));
-    if (r.size() < 3) continue;
-    const bool expected = bruteForceSimple(r);
-    ASSERT_EQ(chainSweepSimple(r), expected) << "trial " << trial << ":" << describe(r);
-    Ring reversed(r.rbegin(), r.rend());
-    ASSERT_EQ(chainSweepSimple(reversed), expected) << "trial " << trial << ", reversed";
-    simple += expected ? 1 : 0;
-    ++total;
-  }
-  EXPECT_GT(simple, total / 20);  // both verdicts are exercised
-  EXPECT_LT(simple, total - 1000);
+  expectRingVerdicts([&] { return pixelWalk(rng, 3 + int(rng() % 10), 1 + int(rng() % 3)); }, 30000,
+                     20);
 }
 
 // Sets of two or three pixel walks, moved apart by a few units: ringsAreSimple() against the
@@ -519,23 +528,17 @@ TEST(StageSimpleRing, PixelWalksAgreeWithBruteForce) {
 // different rings starting and ending on one x, are common.
 TEST(StageSimpleRing, SetsOfPixelWalksAgreeWithBruteForce) {
   std::mt19937 rng(20261207);
-  detail::ChainScratch scratch;
-  int simple = 0, total = 0;
-  for (int trial = 0; trial < 20000; ++trial) {
-    std::vector<Ring> set(2 + rng() % 2);
-    for (Ring& r : set) {
-      r = pixelWalk(rng, 3 + int(rng() % 6), 1 + int(rng() % 2));
-      const IPoint shift{std::int64_t(rng() % 7) - 3, std::int64_t(rng() % 7) - 3};
-      for (IPoint& q : r) q = {q.x + shift.x, q.y + shift.y};
-    }
-    if (std::any_of(set.begin(), set.end(), [](const Ring& r) { return r.size() < 3; })) continue;
-    const bool expected = bruteForceSetSimple(set);
-    ASSERT_EQ(detail::ringsAreSimple(set, scratch), expected) << "trial " << trial;
-    simple += expected ? 1 : 0;
-    ++total;
-  }
-  EXPECT_GT(simple, 300);  // both verdicts are exercised
-  EXPECT_LT(simple, total - 1000);
+  expectSetVerdicts(
+      [&] {
+        std::vector<Ring> set(2 + rng() % 2);
+        for (Ring& r : set) {
+          r = pixelWalk(rng, 3 + int(rng() % 6), 1 + int(rng() % 2));
+          const IPoint shift{std::int64_t(rng() % 7) - 3, std::int64_t(rng() % 7) - 3};
+          for (IPoint& q : r) q = {q.x + shift.x, q.y + shift.y};
+        }
+        return set;
+      },
+      20000, 300);
 }
 
 // The chains are x-monotone with vertical edges inside: a ring splits only at its x extremes.
