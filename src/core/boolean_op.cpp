@@ -27,6 +27,8 @@ PolygonSet resolve(const BooleanSpec& spec, const Grid& grid, Workspace& ws,
   ws.trace.releaseIfAbove(kKeptOutputBytes);
   PolygonSet result = buildNesting(arrangement, contours, grid, ws.nesting);
   keepIfSmall(arrangement.vertices, ws.arrangement.vertices);
+  keepIfSmall(arrangement.lines, ws.arrangement.lines);
+  keepIfSmall(arrangement.offGrid, ws.arrangement.offGrid);
   keepIfSmall(arrangement.openPieces, ws.arrangement.openPieces);
   keepIfSmall(contours.rings, ws.trace.contours.rings);
   keepIfSmall(contours.ringOfPiece, ws.trace.contours.ringOfPiece);

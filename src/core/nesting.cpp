@@ -68,9 +68,9 @@ PolygonSet buildNesting(const Arrangement& arrangement, const Contours& contours
   std::vector<Point>& converted = scratch.converted;
   converted.assign(cache ? arrangement.vertices.size() : 0, Point{kUnset, kUnset});
   auto pointOf = [&](int v) {
-    if (!cache) return frame.point(arrangement.vertices[std::size_t(v)]);
+    if (!cache) return frame.point(arrangement.exact(v));
     Point& q = converted[std::size_t(v)];
-    if (std::isnan(q.x)) q = frame.point(arrangement.vertices[std::size_t(v)]);
+    if (std::isnan(q.x)) q = frame.point(arrangement.exact(v));
     return q;
   };
   // Traced rings have the filled side on their left (outer rings counter-clockwise in the raw

@@ -24,7 +24,7 @@ class OutputFrame {
   [[nodiscard]] double coordinate(i128 units, i128 w, int axis) const;
   /// Both coordinates of an exact point.
   [[nodiscard]] Point point(const XPoint& p) const { return point(p.x, p.y, p.w); }
-  [[nodiscard]] Point point(const PackedPoint& p) const { return point(p.x(), p.y(), p.w); }
+  [[nodiscard]] Point point(const ExactCoords& p) const { return point(p.x, p.y, p.w); }
   /// Both coordinates of (x/w, y/w).
   [[nodiscard]] Point point(i128 x, i128 y, i128 w) const {
     if (gridFast_ && w == 1) {  // a grid point (within the grid's range, as every vertex)

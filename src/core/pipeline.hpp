@@ -170,6 +170,29 @@ struct GridSegment {
   }
 };
 
+/// The crossing of the lines of l1 and l2, which must not be parallel, as (X/W, Y/W) with
+/// W = |d1 x d2| for their directions d1 and d2, not reduced (lineIntersection() without the grid
+/// test and the cached doubles). Grid coordinates lie within 2^30 of the origin, so each
+/// difference fits 32 bits and each product of two 64; W and the crossing's parameter along l1
+/// mostly fit 64 bits too, and then each coordinate takes two 64-by-64-bit products.
+inline ExactCoords crossingOfLines(const GridSegment& l1, const GridSegment& l2) {
+  const std::int64_t d1x = std::int64_t(l1.bx) - l1.ax, d1y = std::int64_t(l1.by) - l1.ay;
+  const std::int64_t d2x = std::int64_t(l2.bx) - l2.ax, d2y = std::int64_t(l2.by) - l2.ay;
+  const std::int64_t cx = std::int64_t(l2.ax) - l1.ax, cy = std::int64_t(l2.ay) - l1.ay;
+  i128 den = i128(d1x * d2y) - i128(d1y * d2x);
+  i128 num = i128(cx * d2y) - i128(cy * d2x);
+  if (den < 0) {
+    den = -den;
+    num = -num;
+  }
+  const auto fits64 = [](i128 v) { return v == i128(std::int64_t(v)); };
+  if (fits64(den) && fits64(num)) {
+    const std::int64_t w = std::int64_t(den), t = std::int64_t(num);
+    return {i128(l1.ax) * w + i128(d1x) * t, i128(l1.ay) * w + i128(d1y) * t, den};
+  }
+  return {i128(l1.ax) * den + i128(d1x) * num, i128(l1.ay) * den + i128(d1y) * num, den};
+}
+
 /// The winding numbers on the two sides of a piece.
 struct PieceWindings {
   /// Change of each operand's winding number from the side below the piece to the side above
@@ -195,17 +218,52 @@ struct EdgePiece : GridSegment {
   int below = -1;  ///< the nearest result piece below this one at its left end, or -1
 };
 static_assert(sizeof(EdgePiece) == 28, "the arrangement keeps one per result piece");
-/// In chunks of 2^15 (896 KiB), as the vertices.
-using EdgePieces = ChunkedArray<EdgePiece, 15>;
+/// In chunks of 2^13 (224 KiB): at most one chunk unused (2^15 left 0.34 MB unused on W3-1k
+/// non-zero, where it peaks).
+using EdgePieces = ChunkedArray<EdgePiece, 13>;
+
+/// A vertex of the arrangement in 8 bytes, an exact point in 32 (PackedPoint) kept only where
+/// needed. Nearly every vertex is a grid point or the crossing of the grid lines of two input
+/// edges; the crossing is computed again from the lines when it is read (W3-1k non-zero keeps
+/// 104k vertices through tracing, where it peaks: 3.3 MB as exact points). Grid coordinates lie
+/// within Grid::kMaxUnits = 2^30 of the origin, so `a` beyond that range tells the other kinds:
+///   a in [-2^30, 2^30]: the grid point (a, b);
+///   a < -2^30: the crossing of Arrangement::lines[-2^30 - 1 - a] and lines[b];
+///   a > 2^30: Arrangement::offGrid[a - 2^30 - 1] (an off-grid end of an exact edge).
+struct ArrangementVertex {
+  static constexpr std::int64_t kGridBound = std::int64_t{1} << 30;
+  /// The largest index a crossing's first line or an off-grid point can have.
+  static constexpr std::int64_t kMaxIndex = std::int64_t(INT32_MAX) - kGridBound - 1;
+  std::int32_t a = 0, b = 0;
+  static ArrangementVertex grid(IPoint p) { return {std::int32_t(p.x), std::int32_t(p.y)}; }
+  static ArrangementVertex crossing(std::int64_t line1, std::int64_t line2) {
+    return {std::int32_t(-kGridBound - 1 - line1), std::int32_t(line2)};
+  }
+  static ArrangementVertex offGrid(std::int64_t index) {
+    return {std::int32_t(kGridBound + 1 + index), 0};
+  }
+  [[nodiscard]] bool onGrid() const { return a >= -kGridBound && a <= kGridBound; }
+  [[nodiscard]] bool isCrossing() const { return a < -kGridBound; }
+  [[nodiscard]] std::size_t line1() const { return std::size_t(-kGridBound - 1 - a); }
+  [[nodiscard]] std::size_t line2() const { return std::size_t(b); }
+  [[nodiscard]] std::size_t offGridIndex() const { return std::size_t(a - kGridBound - 1); }
+};
+static_assert(Grid::kMaxUnits <= ArrangementVertex::kGridBound, "grid points fit the range");
+static_assert(sizeof(ArrangementVertex) == 8);
 
 /// The result pieces of the planar arrangement of all input edges, in the order the sweep met
 /// them (so a piece's `below` always has a smaller index), with the vertices they use in
 /// lexicographic order. Pieces that do not bound the result are never stored, so memory is
 /// linear in input plus output.
 struct Arrangement {
-  /// In chunks of 2^15 (1 MiB): grown without copies or a doubled capacity (chunked_array.hpp).
-  /// The sweep appends them one at a time; how many there are is known only at its end.
-  ChunkedArray<PackedPoint, 15> vertices;
+  /// In chunks of 2^15 (256 KiB): grown without copies or a doubled capacity
+  /// (chunked_array.hpp). The sweep appends them one at a time; how many there are is known
+  /// only at its end.
+  ChunkedArray<ArrangementVertex, 15> vertices;
+  /// The grid lines crossing vertices refer to (each input edge's once, when it first makes
+  /// one), and the vertices that are neither grid points nor such crossings.
+  std::vector<GridSegment> lines;
+  std::vector<PackedPoint> offGrid;
   EdgePieces pieces;
   std::vector<Side> sides;  ///< filled side of each piece (never Side::None)
   /// The winding numbers on each piece's sides, only with BooleanSpec::recordWindings.
@@ -215,6 +273,20 @@ struct Arrangement {
   std::vector<OpenPiece> openPieces;
   /// Crossings the sweep found (what Limits::maxCrossings counts).
   std::uint64_t crossings = 0;
+
+  /// Vertex v as exact coordinates (X/W, Y/W), W > 0, not reduced.
+  [[nodiscard]] ExactCoords exact(int v) const {
+    const ArrangementVertex& vertex = vertices[std::size_t(v)];
+    if (vertex.onGrid()) return {vertex.a, vertex.b, 1};
+    if (vertex.isCrossing()) return crossingOfLines(lines[vertex.line1()], lines[vertex.line2()]);
+    const PackedPoint& p = offGrid[vertex.offGridIndex()];
+    return {p.x(), p.y(), i128(p.w)};
+  }
+  /// Vertex v with its cached doubles.
+  [[nodiscard]] XPoint point(int v) const {
+    const ExactCoords p = exact(v);
+    return XPoint(p.x, p.y, p.w);
+  }
 };
 
 /// Stage 1 (split_edges.cpp): sweep line over all edges. Finds every crossing, touching vertex

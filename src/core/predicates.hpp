@@ -330,6 +330,12 @@ inline bool lineIntersection(IPoint a, IPoint b, IPoint c, IPoint d, XPoint& out
   return true;
 }
 
+/// The exact coordinates of an XPoint without its cached doubles (a sweep event and an
+/// arrangement vertex keep those apart or not at all).
+struct ExactCoords {
+  i128 x, y, w;
+};
+
 /// Whether the closed grid segments (a, b) and (c, d) meet in exactly one point (not parallel,
 /// so not collinear), and that point (lineIntersection()). The same answer as the four
 /// orientation tests orient(a, b, c), orient(a, b, d), orient(c, d, a), orient(c, d, b) followed

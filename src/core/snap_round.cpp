@@ -172,8 +172,8 @@ std::vector<InputEdge> snapRoundPieces(const Arrangement& arrangement, std::int6
   std::vector<IPoint> pixelOfVertex;
   pixelOfVertex.reserve(arrangement.vertices.size());
   bool moves = false;  // some vertex is not a pixel centre
-  for (const PackedPoint& packed : arrangement.vertices) {
-    const XPoint v = packed.unpack();
+  for (std::size_t i = 0; i < arrangement.vertices.size(); ++i) {
+    const XPoint v = arrangement.point(int(i));
     pixelOfVertex.push_back(pixelOf(v, unitsPerStep));
     const IPoint c = pixelOfVertex.back();
     moves = moves || v.w != 1 || v.x != i128(c.x) * unitsPerStep || v.y != i128(c.y) * unitsPerStep;
@@ -193,8 +193,8 @@ std::vector<InputEdge> snapRoundPieces(const Arrangement& arrangement, std::int6
     const bool forward = arrangement.sides[e] == Side::Above;  // left -> right
     const int from = forward ? piece.left : piece.right;
     const int to = forward ? piece.right : piece.left;
-    const XPoint p = arrangement.vertices[std::size_t(from)].unpack();
-    const XPoint q = arrangement.vertices[std::size_t(to)].unpack();
+    const XPoint p = arrangement.point(from);
+    const XPoint q = arrangement.point(to);
     const IPoint first = pixelOfVertex[std::size_t(from)];
     const IPoint last = pixelOfVertex[std::size_t(to)];
     IPoint d = piece.direction();
@@ -223,8 +223,11 @@ std::vector<InputEdge> snapRoundPieces(const Arrangement& arrangement, std::int6
 namespace {
 
 bool allOnGrid(const Arrangement& arrangement) {
-  return std::all_of(arrangement.vertices.begin(), arrangement.vertices.end(),
-                     [](const PackedPoint& v) { return v.w == 1; });
+  // A crossing vertex is off the grid (the sweep keeps one on the grid as a grid point).
+  return std::all_of(
+      arrangement.vertices.begin(), arrangement.vertices.end(), [&](const ArrangementVertex& v) {
+        return v.onGrid() || (!v.isCrossing() && arrangement.offGrid[v.offGridIndex()].w == 1);
+      });
 }
 
 // The output coordinate of step index n: correctly rounded n * step where that is cheap to

@@ -49,8 +49,8 @@ inline bool eventAfter(const SweepEvent& a, const SweepEvent& b,
   return eventAfterExact(a, b, points);
 }
 
-// Every vertex lies within the grid's range, so PackedPoint holds it: a sweep that made one
-// beyond has a bug.
+// Every vertex lies within the grid's range, so ArrangementVertex or PackedPoint holds it: a
+// sweep that made one beyond has a bug.
 [[noreturn, gnu::noinline, gnu::cold]] void vertexBeyondRange() {
   throw InternalError("splitEdges: a vertex beyond the grid's range");
 }
@@ -67,6 +67,7 @@ class Sweep {
         const BooleanSpec& spec, Workspace& ws)
       : spec_(spec),
         pieces_(ws.pieces),
+        pieceLines_(ws.pieceLines),
         exactRights_(ws.exactRights),
         starts_(ws.starts),
         queue_(ws.queue),
@@ -81,6 +82,7 @@ class Sweep {
     // The status links pieces by address: the array must not move while the sweep runs.
     pieces_.clear();
     pieces_.reserve(total);
+    pieceLines_.assign(total, -1);
     exactRights_.clear();
     exactRights_.reserve(exactEdges.size());
     starts_.clear();
@@ -127,6 +129,8 @@ class Sweep {
     releaseEachAbove(kKeptStageBytes, ws.sortedStarts);
     out_ = std::move(ws.arrangement);  // the kept capacity (resolve() gives it back)
     out_.vertices.clear();
+    out_.lines.clear();
+    out_.offGrid.clear();
     out_.pieces.clear();
     out_.sides.clear();
     out_.windings.clear();
@@ -306,16 +310,43 @@ class Sweep {
   int vertexHere(const XPoint& p) {
     if (vertex_ < 0) {
       vertex_ = int(out_.vertices.size());
-      if (__builtin_expect(!PackedPoint::representable(p), 0)) vertexBeyondRange();
-      out_.vertices.push_back(PackedPoint(p));
+      // A grid point's cached doubles are its coordinates, rounded only beyond 2^53.
+      constexpr double kBound = double(ArrangementVertex::kGridBound);
+      out_.vertices.push_back(p.w == 1 && std::fabs(p.fx) <= kBound && std::fabs(p.fy) <= kBound
+                                  ? ArrangementVertex::grid(gridPoint(p))
+                                  : offGridVertex(p));
     }
     return vertex_;
+  }
+  // p off the grid as the arrangement keeps it: where two crossing pieces met at p, the crossing
+  // of their lines; else (an exact edge's end) the exact point.
+  [[gnu::noinline]] ArrangementVertex offGridVertex(const XPoint& p) {
+    if (crossingHere_[0] >= 0) {
+      const std::int64_t line1 = lineOf(crossingHere_[0]), line2 = lineOf(crossingHere_[1]);
+      if (line1 <= ArrangementVertex::kMaxIndex) return ArrangementVertex::crossing(line1, line2);
+    }
+    if (!PackedPoint::representable(p) ||
+        out_.offGrid.size() > std::size_t(ArrangementVertex::kMaxIndex)) {
+      vertexBeyondRange();
+    }
+    out_.offGrid.push_back(PackedPoint(p));
+    return ArrangementVertex::offGrid(std::int64_t(out_.offGrid.size()) - 1);
+  }
+  // The index of piece i's line in the arrangement's lines, added on first use.
+  int lineOf(int i) {
+    int& line = pieceLines_[std::size_t(i)];
+    if (line < 0) {
+      line = int(out_.lines.size());
+      out_.lines.push_back(static_cast<const GridSegment&>(pieces_[std::size_t(i)]));
+    }
+    return line;
   }
 
   // One event point p: every active piece through p is cut there, the pieces leaving p are
   // merged where coincident, labelled and put in the status, and new neighbours are tested.
   void visit(const XPoint& p) {
     vertex_ = -1;
+    crossingHere_ = {-1, -1};
     starting_.clear();
     const auto [locator, known] = takeEventsAt(p);
     const auto [lo, hi] = piecesThrough(p, locator, known);
@@ -355,6 +386,7 @@ class Sweep {
       // A crossing lies exactly on the lines of both its pieces, and a piece still in the
       // status started before p and ends at or after it (its right end is an event): so each
       // of the two still in the status passes through p, without an orientation test.
+      if (ev.through >= 0) crossingHere_ = {ev.through, ev.other};
       if (ev.through >= 0 && locator < 0) {
         const bool a = pieces_[ev.through].node != nullptr, b = pieces_[ev.other].node != nullptr;
         if (a || b) {
@@ -584,7 +616,9 @@ class Sweep {
   const BooleanSpec& spec_;
   std::uint64_t crossings_ = 0;  // crossings found so far (Limits::maxCrossings)
   int vertex_ = -1;
+  std::array<int, 2> crossingHere_{-1, -1};  // two pieces crossing at the current event point
   std::vector<SweepPiece>& pieces_;
+  std::vector<int>& pieceLines_;
   std::vector<XPoint>& exactRights_;
   std::vector<SweepStart>& starts_;
   const StartFrame frame_;  // the grid range's corner

@@ -53,6 +53,8 @@ void keepIfSmall(Rings& used, Rings& kept) {
 template <class F>
 void Workspace::forEachLent(F f) {
   f(arrangement.vertices);
+  f(arrangement.lines);
+  f(arrangement.offGrid);
   f(arrangement.pieces);
   f(arrangement.sides);
   f(arrangement.openPieces);
@@ -63,12 +65,13 @@ void Workspace::forEachLent(F f) {
 
 void Workspace::releaseSweepIfAbove(std::size_t bytes) {
   if (nodes.size() * sizeof(StatusNode) > bytes) std::deque<StatusNode>().swap(nodes);
-  releaseEachAbove(bytes, freeNodes, pieces, exactRights, starts, sortedStarts, queue, eventPoints,
-                   freeEventPoints, starting, through);
+  releaseEachAbove(bytes, freeNodes, pieces, pieceLines, exactRights, starts, sortedStarts, queue,
+                   eventPoints, freeEventPoints, starting, through);
 }
 
 void Workspace::release() {
   std::vector<SweepPiece>().swap(pieces);
+  std::vector<int>().swap(pieceLines);
   std::vector<XPoint>().swap(exactRights);
   std::vector<SweepStart>().swap(starts);
   std::vector<SweepStart>().swap(sortedStarts);

@@ -274,11 +274,6 @@ struct StartFrame {
   }
 };
 
-/// The exact coordinates of an XPoint without its cached doubles (an event keeps those).
-struct ExactCoords {
-  i128 x, y, w;
-};
-
 /// A point the sweep must visit that is not an input vertex: a crossing, an off-grid end, or
 /// where a merged coincident piece goes on. 32 bytes: the exact coordinates live in the event
 /// point pool (Workspace::eventPoints, 48 bytes a slot); the heap orders events by the cached
@@ -303,16 +298,15 @@ struct ClipVertex {
 /// pieces leaving and arriving, the pairing, and the walk. On small calls (W4: 10,000 contours of
 /// ~20 vertices) their allocations cost more than the tracing.
 struct TraceScratch {
-  std::vector<int> outHead, outNext, balance, inHead, inNext, shared, outs, ins, pairOut, onStack,
-      stackV, stackE;
+  std::vector<int> outHead, outNext, inHead, shared, outs, ins, onStack, stackV, stackE;
   std::vector<char> meets;  ///< per vertex: several result pieces leave it
   /// Storage lent to the traced contours of a call (not a working array: not in forEach()).
   Contours contours;
   /// Every array, for recycleAll() / release().
   template <class F>
   void forEach(F f) {
-    for (std::vector<int>* v : {&outHead, &outNext, &balance, &inHead, &inNext, &shared, &outs,
-                                &ins, &pairOut, &onStack, &stackV, &stackE}) {
+    for (std::vector<int>* v :
+         {&outHead, &outNext, &inHead, &shared, &outs, &ins, &onStack, &stackV, &stackE}) {
       f(*v);
     }
     f(meets);
@@ -323,12 +317,12 @@ struct TraceScratch {
   void releaseIfAbove(std::size_t bytes) {
     releaseTogetherAbove(bytes, [this](auto f) { forEach(f); });
   }
-  /// The same for the pairing's arrays (the pieces leaving and arriving at each vertex, the
-  /// balances), which the walk after it does not read: W3-1k even-odd held 9 MB of them through
-  /// the walk, where it peaks.
+  /// The same for the pairing's arrays (the pieces leaving and arriving at each vertex), which
+  /// the walk after it does not read: W3-1k even-odd held 9 MB of them through the walk, where
+  /// it peaked.
   void releasePairingIfAbove(std::size_t bytes) {
     releaseTogetherAbove(bytes, [this](auto f) {
-      for (std::vector<int>* v : {&outHead, &outNext, &balance, &inHead, &inNext}) f(*v);
+      for (std::vector<int>* v : {&outHead, &outNext, &inHead}) f(*v);
     });
   }
 
@@ -365,6 +359,9 @@ struct Workspace {
   std::array<Rings, kOperands> operandRings;
   // Sweep (split_edges.cpp).
   std::vector<SweepPiece> pieces;
+  /// Each piece's line in the arrangement's lines once a vertex refers to it, else -1 (apart
+  /// from SweepPiece, which stays at 160 bytes).
+  std::vector<int> pieceLines;
   std::vector<XPoint> exactRights;               ///< the right ends of the pieces of exact edges
   std::vector<SweepStart> starts, sortedStarts;  ///< sortedStarts: the sort's second array
   std::vector<SweepEvent> queue;                 ///< a binary heap, earliest point first

@@ -166,5 +166,62 @@ TEST(Simplify, CrossingsSharingXAtRangeEdge) {
   }
 }
 
+// An arrangement keeps a crossing as the indices of two lines (ArrangementVertex) and computes
+// it again when read: crossingOfLines() must give the point lineIntersection() gives, also where
+// W or the parameter along the first line need more than 64 bits (lines across the whole grid
+// range), and the three kinds of vertex must read back as stored.
+TEST(StageSplitEdges, ArrangementVerticesReadBackAsTheSweepMadeThem) {
+  constexpr std::int64_t kMax = Grid::kMaxUnits;
+  std::mt19937_64 rng(17);
+  std::uniform_int_distribution<std::int64_t> any(-kMax, kMax);
+  std::uniform_int_distribution<std::int64_t> edge(0, 1);
+  const auto pick = [&](bool extreme) {
+    return extreme ? detail::IPoint{edge(rng) != 0 ? kMax : -kMax, edge(rng) != 0 ? kMax : -kMax}
+                   : detail::IPoint{any(rng), any(rng)};
+  };
+  int wide = 0;
+  for (int i = 0; i < 20000; ++i) {
+    const bool extreme = i % 4 == 0;
+    detail::GridSegment l1, l2;
+    l1.setLine(pick(extreme), pick(extreme));
+    l2.setLine(pick(extreme), pick(i % 2 == 0));
+    detail::XPoint expected;
+    if (!detail::lineIntersection(l1.lineA(), l1.lineB(), l2.lineA(), l2.lineB(), expected)) {
+      continue;
+    }
+    const detail::ExactCoords got = detail::crossingOfLines(l1, l2);
+    ASSERT_GT(got.w, 0);
+    wide += got.w != detail::i128(std::int64_t(got.w)) ? 1 : 0;
+    // X / W == X' / W' without a division (|X| < 2^95 and W < 2^64: the products fit 160 bits,
+    // compared as exact 256-bit products).
+    ASSERT_EQ(detail::i256(got.x) * detail::i256(expected.w),
+              detail::i256(expected.x) * detail::i256(got.w))
+        << i;
+    ASSERT_EQ(detail::i256(got.y) * detail::i256(expected.w),
+              detail::i256(expected.y) * detail::i256(got.w))
+        << i;
+  }
+  EXPECT_GT(wide, 0);  // the 128-bit branch ran
+
+  detail::Arrangement a;
+  detail::GridSegment l1, l2;
+  l1.setLine({0, 0}, {10, 4});
+  l2.setLine({0, 4}, {10, 0});
+  a.lines = {l1, l2};
+  a.offGrid.push_back(detail::PackedPoint(detail::XPoint(7, -3, 2)));
+  a.vertices.push_back(detail::ArrangementVertex::grid({-kMax, kMax}));
+  a.vertices.push_back(detail::ArrangementVertex::crossing(0, 1));
+  a.vertices.push_back(detail::ArrangementVertex::offGrid(0));
+  EXPECT_EQ(stages::name(a.point(0)),
+            "(" + std::to_string(-kMax) + "," + std::to_string(kMax) + ")");
+  const detail::XPoint crossing = a.point(1);  // (5, 2)
+  EXPECT_EQ(crossing.x, 5 * crossing.w);
+  EXPECT_EQ(crossing.y, 2 * crossing.w);
+  EXPECT_EQ(stages::name(a.point(2)), "(7/2,-3/2)");
+  EXPECT_TRUE(a.vertices[0].onGrid());
+  EXPECT_TRUE(a.vertices[1].isCrossing());
+  EXPECT_FALSE(a.vertices[2].onGrid() || a.vertices[2].isCrossing());
+}
+
 }  // namespace
 }  // namespace roiclip

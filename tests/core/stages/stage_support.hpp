@@ -53,7 +53,7 @@ inline std::string name(const detail::XPoint& p) {
 /// "(x,y)" of every arrangement vertex, by vertex id.
 inline std::vector<std::string> vertexNames(const detail::Arrangement& a) {
   std::vector<std::string> names;
-  for (const detail::PackedPoint& v : a.vertices) names.push_back(name(v.unpack()));
+  for (std::size_t v = 0; v < a.vertices.size(); ++v) names.push_back(name(a.point(int(v))));
   return names;
 }
 
@@ -61,8 +61,8 @@ inline std::vector<std::string> vertexNames(const detail::Arrangement& a) {
 /// piece is its right side: the sweep orders vertical edges as very steep rising ones.
 inline std::pair<Point, Point> sidePoints(const detail::Arrangement& a, const detail::EdgePiece& p,
                                           double d) {
-  const detail::XPoint l = a.vertices[std::size_t(p.left)].unpack();
-  const detail::XPoint r = a.vertices[std::size_t(p.right)].unpack();
+  const detail::XPoint l = a.point(p.left);
+  const detail::XPoint r = a.point(p.right);
   const Point mid((l.fx + r.fx) / 2, (l.fy + r.fy) / 2);
   if (p.ax == p.bx) return {mid + Point(d, 0), mid - Point(d, 0)};
   return {mid - Point(0, d), mid + Point(0, d)};
@@ -112,9 +112,8 @@ inline PolygonSet generalIntersect(const Paths& s, const Paths& c, FillRule rule
 inline double rawSignedArea(const detail::Arrangement& a, const detail::TracedRing& ring) {
   double twice = 0;
   for (std::size_t i = 0; i < ring.vertices.size(); ++i) {
-    const detail::XPoint p = a.vertices[std::size_t(ring.vertices[i])].unpack();
-    const detail::XPoint q =
-        a.vertices[std::size_t(ring.vertices[(i + 1) % ring.vertices.size()])].unpack();
+    const detail::XPoint p = a.point(ring.vertices[i]);
+    const detail::XPoint q = a.point(ring.vertices[(i + 1) % ring.vertices.size()]);
     twice += p.fx * q.fy - q.fx * p.fy;
   }
   return twice / 2;
