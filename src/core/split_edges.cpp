@@ -386,10 +386,11 @@ class Sweep {
       // A crossing lies exactly on the lines of both its pieces, and a piece still in the
       // status started before p and ends at or after it (its right end is an event): so each
       // of the two still in the status passes through p, without an orientation test.
-      if (ev.through >= 0) crossingHere_ = {ev.through, ev.other};
-      if (ev.through >= 0 && locator < 0) {
+      // A crossing's two lines also give the point to the arrangement (offGridVertex()).
+      if (ev.through >= 0) {
+        crossingHere_ = {ev.through, ev.other};
         const bool a = pieces_[ev.through].node != nullptr, b = pieces_[ev.other].node != nullptr;
-        if (a || b) {
+        if (locator < 0 && (a || b)) {
           locator = a ? ev.through : ev.other;
           known = a && b ? ev.other : -1;
         }
