@@ -36,6 +36,38 @@ PolygonSet resolve(const BooleanSpec& spec, const Grid& grid, Workspace& ws,
   return result;
 }
 
+// The sweep-free paths for rings that touch only at vertices (separatePinches()): into `out`,
+// or false.
+bool intersectPinched(const Rings& rings, FillRule rule, const SnappedOperand& convex,
+                      const Grid& grid, Workspace& ws, std::optional<bool> inClosed,
+                      PolygonSet& out) {
+  PinchedRings pinched;
+  if (!separatePinches(rings, pinched) || !ringsAreSimple(pinched.separated, ws.chains)) {
+    return false;
+  }
+  const std::vector<IPoint>& c = convex.rings[0];
+  const bool inside = inClosed ? *inClosed : ringsInsideConvex(rings, c, convex.convex);
+  if (inside) {
+    out = simpleRingsRegion(pinched.rings, rule, ws.chains, grid);
+    return true;
+  }
+  // The pairs touching strictly inside C; a pinch on C's boundary: the general path.
+  std::vector<std::pair<int, int>> touching;
+  for (const PinchedRings::Pinch& pinch : pinched.pinches) {
+    bool outside = false, onLine = false;
+    for (std::size_t j = 0; j < c.size(); ++j) {
+      const int o = orientInGrid(c[j], c[(j + 1) % c.size()], pinch.at) * convex.convex;
+      outside = outside || o < 0;
+      onLine = onLine || o == 0;
+    }
+    if (outside) continue;
+    if (onLine) return false;
+    touching.emplace_back(pinch.ring, pinch.other);
+  }
+  return intersectSimpleRingsConvex(pinched.rings, rule, c, convex.convex, grid, ws.chains,
+                                    ws.weiler, out, nullptr, &touching);
+}
+
 // Some rings AND one convex ring: the sweep-free paths where they apply, else the pre-clip and
 // stages 1 to 4. `budget` is what is left of Limits::maxCrossings; the sweep's crossings are
 // taken from it. `inClosed`, when known (groupRingsForConvex()), is ringsInsideConvex(rings);
@@ -65,6 +97,14 @@ PolygonSet intersectRings(const Rings& rings, FillRule rule, const SnappedOperan
         return direct;
       }
     }
+  }
+  // Rings touching only at vertices (pixel contours meeting at a pixel corner): the same paths
+  // on the rings split there, when the rings with a corner cut off at each such vertex are
+  // simple and apart.
+  // Only for sets: a single ring that fails the test is mostly one that crosses itself (W2's
+  // epitrochoid: separating its repeated vertices cost 40% more instructions).
+  if (rings.size() > 1 && intersectPinched(rings, rule, convex, grid, ws, inClosed, direct)) {
+    return direct;
   }
   // The sweep-free attempts are done: their large arrays do not stay through the general path
   // (on a 1M-vertex contour the chains and crossings took 73 MB of its peak). Smaller ones are

@@ -442,10 +442,37 @@ Path simpleRingPath(const std::vector<IPoint>& ring, LowestVertex lowest, bool h
 /// that bounds the region runs around C, or walked rings along one outer ring's face are several
 /// and a hole inside C would need a point test to choose among them.
 /// `known`, when not null: what is known of each ring's vertices (as for one ring above).
+/// `touchingInC`, when not null: pairs of rings that touch at a vertex strictly inside C (the
+/// pinches of separatePinches()); false when both of a pair cross C's boundary (one walked ring
+/// could then visit that vertex twice, which stages 1 to 4 split).
 bool intersectSimpleRingsConvex(const Rings& rings, FillRule rule,
                                 const std::vector<IPoint>& convex, int convexOrientation,
                                 const Grid& grid, ChainScratch& chains, WeilerScratch& scratch,
-                                PolygonSet& out, const KnownSides* known = nullptr);
+                                PolygonSet& out, const KnownSides* known = nullptr,
+                                const std::vector<std::pair<int, int>>* touchingInC = nullptr);
+
+/// Rings touching themselves or each other only at vertices, as separatePinches() prepares them
+/// (pinches.cpp).
+struct PinchedRings {
+  /// The rings split where one visits a vertex twice: each visits each vertex once; every
+  /// point that two visit is a pinch.
+  Rings rings;
+  /// The same rings (same indices) with one of the two corners at each pinch cut off by a grid
+  /// step along its edges: simple and pairwise apart (ringsAreSimple()) only if `rings` meet
+  /// nowhere but at the pinches, touching there without crossing. Their nesting is that of
+  /// `rings`.
+  Rings separated;
+  struct Pinch {
+    IPoint at;
+    int ring, other;  ///< the two rings of `rings` through it
+  };
+  std::vector<Pinch> pinches;
+};
+/// Prepares rings for the sweep-free paths where they touch only at vertices (pixel contours
+/// meeting at a pixel corner). False when a vertex is visited three times or more, no vertex
+/// twice, two edges at a pinch overlap, two rings cross at one, or the vertices lack the common
+/// low zero bits the cut needs (a fitted grid's pixel coordinates have about 20; 12 needed).
+bool separatePinches(const Rings& rings, PinchedRings& out);
 
 /// Whether every vertex of the rings lies inside the convex ring (orientation
 /// `convexOrientation`) or on its boundary: then so does everything they fill, and their

@@ -472,7 +472,8 @@ bool intersectSimpleConvex(const std::vector<IPoint>& ring, FillRule rule,
 bool intersectSimpleRingsConvex(const Rings& rings, FillRule rule,
                                 const std::vector<IPoint>& convex, int convexOrientation,
                                 const Grid& grid, ChainScratch& chains, WeilerScratch& w,
-                                PolygonSet& out, const KnownSides* known) {
+                                PolygonSet& out, const KnownSides* known,
+                                const std::vector<std::pair<int, int>>* touchingInC) {
   out = {};
   if (convex.size() > std::size_t(kMaxSides)) return false;
   nestSimpleRings(rings, rule, chains);
@@ -527,6 +528,11 @@ bool intersectSimpleRingsConvex(const Rings& rings, FillRule rule,
     }
   }
   w.crossStart[ringCount] = int(w.crossings.size());
+  if (touchingInC != nullptr) {
+    for (const auto& [a, b] : *touchingInC) {
+      if (place[std::size_t(a)] == kAcross && place[std::size_t(b)] == kAcross) return false;
+    }
+  }
 
   // The walked rings are outer rings (each runs along C somewhere). For each ring across C that
   // bounds an outer ring's face (the outer ring itself, or one of its holes), the walked ring it

@@ -1,0 +1,281 @@
+// SPDX-License-Identifier: MIT
+// Stage 0, pinches: rings that touch themselves or each other only at shared vertices, made
+// ready for the sweep-free paths.
+//
+// A pixel contour often meets itself or a neighbour at a pixel corner (two pixels touching
+// diagonally, 8-connectivity): the same vertex is visited twice, and the simple-ring test
+// rejects the set, so it went through the sweep, at several times the cost per vertex. Here a
+// vertex visited exactly twice (a pinch) is prepared instead:
+//  - A ring visiting a vertex twice is split there (the stack method of tracing: pop the loop
+//    between the two visits), so each ring visits each vertex once. The edges, and so every
+//    winding number, stay the same; the general path returns such rings split the same way.
+//  - At each pinch the two passes (in-edge and out-edge of each of the two rings) must touch
+//    without crossing: their four edges point four ways, and the other pass's two edges lie in
+//    the same sector between one pass's edges. One pass's free sector (the one holding neither
+//    edge of the other) is convex (under a half turn); that pass gets its corner cut off: v is
+//    replaced by the grid points one primitive step from v along its two edges (no grid point
+//    lies between). The other pass keeps v.
+//  - The separated rings are then asked to the simple-ring test. They are pairwise disjoint and
+//    simple only if the original rings meet nowhere but at the pinches, where they touch:
+//    every vertex (v included, kept by the other pass) and every edge outside the cut corners is
+//    still there, and the cut corner holds nothing. That last part needs the lattice: every
+//    vertex is a multiple of 2^k (a fitted grid's units have their low bits zero), so an edge
+//    that does not pass through v lies at least 2^2k / |edge| from it, and the corner cut
+//    reaches at most one step from v; the stage asks that a step be shorter than that bound
+//    for the longest edge of the set. An edge that passes through v touches the kept pass.
+//  - The nesting of the separated rings is the nesting of the rings (the corners are small and
+//    hold nothing), so the chain sweep's nesting serves the rings themselves.
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <numeric>
+#include <vector>
+
+#include "pipeline.hpp"
+
+namespace roiclip::detail {
+namespace {
+
+// Fewer common low zero bits than this: no pinch is separated (a step may then come near
+// another edge). Pixel coordinates on a fitted grid have about 20.
+constexpr int kMinLowZeroBits = 12;
+
+struct Visit {
+  int ring, index;
+};
+
+// A slot of visitsTwice()'s hash table.
+struct Slot {
+  IPoint p;
+  Visit first;
+  int count = 0;  // 0: empty
+};
+
+// The points visited twice, as consecutive pairs of visits, in ring order of their second
+// visit (an open-addressing hash table over the vertices, whose low `k` bits are zero). False
+// when a point is visited three times or more.
+bool visitsTwice(const Rings& rings, int k, std::vector<Slot>& table, std::vector<Visit>& twice) {
+  twice.clear();
+  std::size_t count = 0;
+  for (const std::vector<IPoint>& ring : rings) count += ring.size();
+  int bits = 4;
+  while ((std::size_t{1} << bits) < 2 * count) ++bits;
+  table.assign(std::size_t{1} << bits, Slot{});
+  const std::size_t mask = (std::size_t{1} << bits) - 1;
+  for (std::size_t r = 0; r < rings.size(); ++r) {
+    const std::vector<IPoint>& ring = rings[r];
+    for (std::size_t i = 0; i < ring.size(); ++i) {
+      const IPoint p = ring[i];
+      const std::uint64_t h = std::uint64_t(p.x >> k) * 0x9E3779B97F4A7C15ULL ^
+                              std::uint64_t(p.y >> k) * 0xC2B2AE3D27D4EB4FULL;
+      std::size_t at = std::size_t(h >> (64 - bits));
+      while (table[at].count != 0 && !(table[at].p == p)) at = (at + 1) & mask;
+      Slot& slot = table[at];
+      const Visit visit{int(r), int(i)};
+      if (slot.count == 0) {
+        slot.p = p;
+        slot.first = visit;
+      } else if (slot.count == 1) {
+        twice.push_back(slot.first);
+        twice.push_back(visit);
+      } else {
+        return false;
+      }
+      ++slot.count;
+    }
+  }
+  return true;
+}
+
+// Splits ring `ring` at the vertices it visits twice (`partner[i]`: the other visit of vertex
+// i, or -1), the stack method: a vertex seen again while its first visit is on the stack pops
+// the loop between them as a ring. False when a loop has fewer than three vertices.
+bool splitAtSelfPinches(const std::vector<IPoint>& ring, const std::vector<int>& partner,
+                        Rings& out) {
+  const int n = int(ring.size());
+  std::vector<int> stack, position(std::size_t(n), -1);
+  const auto emit = [&](std::size_t from) {
+    if (stack.size() - from < 3) return false;
+    std::vector<IPoint>& loop = out.emplace_back();
+    for (std::size_t s = from; s < stack.size(); ++s) {
+      loop.push_back(ring[std::size_t(stack[s])]);
+      position[std::size_t(stack[s])] = -1;
+    }
+    stack.resize(from);
+    return true;
+  };
+  for (int t = 0; t < n; ++t) {
+    const int i = partner[std::size_t(t)];
+    if (i >= 0 && i < t && position[std::size_t(i)] >= 0) {
+      if (!emit(std::size_t(position[std::size_t(i)]))) return false;
+    }
+    position[std::size_t(t)] = int(stack.size());
+    stack.push_back(t);
+  }
+  return emit(0);
+}
+
+// Directions from a vertex, ordered by angle from the positive x axis.
+bool lowerHalf(IPoint d) { return d.y < 0 || (d.y == 0 && d.x < 0); }
+bool angleLess(IPoint u, IPoint w) {
+  const bool lu = lowerHalf(u), lw = lowerHalf(w);
+  if (lu != lw) return lw;
+  return crossSign(u, w) > 0;
+}
+bool sameDirection(IPoint u, IPoint w) { return !angleLess(u, w) && !angleLess(w, u); }
+// Whether direction x lies strictly inside the sector swept counter-clockwise from a to b (x
+// differs from both).
+bool inSector(IPoint a, IPoint b, IPoint x) {
+  return angleLess(a, b) ? angleLess(a, x) && angleLess(x, b) : angleLess(a, x) || angleLess(x, b);
+}
+
+IPoint minus(IPoint a, IPoint b) { return {a.x - b.x, a.y - b.y}; }
+
+// The edges of a visit's ring at its vertex, as directions from it: to the vertex before and
+// to the one after.
+void edgesAt(const Rings& rings, const Visit& at, IPoint& in, IPoint& on) {
+  const std::vector<IPoint>& ring = rings[std::size_t(at.ring)];
+  const std::size_t n = ring.size(), i = std::size_t(at.index);
+  in = minus(ring[(i + n - 1) % n], ring[i]);
+  on = minus(ring[(i + 1) % n], ring[i]);
+}
+
+// Whether four edges at a vertex point four ways (no two overlap).
+bool fourWays(IPoint a, IPoint b, IPoint c, IPoint d) {
+  const IPoint dirs[4] = {a, b, c, d};
+  for (int i = 0; i < 4; ++i) {
+    for (int j = i + 1; j < 4; ++j) {
+      if (sameDirection(dirs[i], dirs[j])) return false;
+    }
+  }
+  return true;
+}
+
+// The grid step from the origin towards d: d divided by the gcd of its components.
+IPoint primitiveStep(IPoint d) {
+  const std::int64_t g = std::gcd(d.x < 0 ? -d.x : d.x, d.y < 0 ? -d.y : d.y);
+  return {d.x / g, d.y / g};
+}
+
+}  // namespace
+
+bool separatePinches(const Rings& rings, PinchedRings& out) {
+  out.rings.clear();
+  out.separated.clear();
+  out.pinches.clear();
+  std::uint64_t bits = 0;
+  std::int64_t widest = 0;  // the largest coordinate difference along an edge
+  for (const std::vector<IPoint>& ring : rings) {
+    if (ring.size() < 3) return false;
+    IPoint q = ring.back();
+    for (const IPoint p : ring) {
+      bits |= std::uint64_t(p.x) | std::uint64_t(p.y);
+      widest = std::max({widest, p.x - q.x, q.x - p.x, p.y - q.y, q.y - p.y});
+      q = p;
+    }
+  }
+  // Every edge is at most sqrt(2) widest long.
+  const double longest = 2.0 * double(widest) * double(widest);
+  if (bits == 0) return false;
+  const int k = __builtin_ctzll(bits);
+  if (k < kMinLowZeroBits) return false;
+  std::vector<Slot> table;
+  std::vector<Visit> twice;
+  if (!visitsTwice(rings, k, table, twice) || twice.empty()) return false;
+
+  // The checks that need no split first (the four edges at a vertex are the same after it):
+  // most sets that fail, fail here, before any ring is copied.
+  for (std::size_t t = 0; t < twice.size(); t += 2) {
+    IPoint a, b, c, d;
+    edgesAt(rings, twice[t], a, b);
+    edgesAt(rings, twice[t + 1], c, d);
+    if (!fourWays(a, b, c, d)) return false;
+    if (twice[t].ring != twice[t + 1].ring && inSector(a, b, c) != inSector(a, b, d)) return false;
+  }
+
+  // Each ring visiting a vertex twice, split there.
+  std::vector<int> partner;
+  std::vector<char> selfPinched(rings.size(), 0);
+  bool anySelf = false;
+  for (std::size_t t = 0; t < twice.size(); t += 2) {
+    if (twice[t].ring == twice[t + 1].ring) {
+      selfPinched[std::size_t(twice[t].ring)] = 1;
+      anySelf = true;
+    }
+  }
+  for (std::size_t r = 0; r < rings.size(); ++r) {
+    if (selfPinched[r] == 0) {
+      out.rings.push_back(rings[r]);
+      continue;
+    }
+    partner.assign(rings[r].size(), -1);
+    for (std::size_t t = 0; t < twice.size(); t += 2) {
+      if (twice[t].ring != int(r) || twice[t + 1].ring != int(r)) continue;
+      partner[std::size_t(twice[t].index)] = twice[t + 1].index;
+      partner[std::size_t(twice[t + 1].index)] = twice[t].index;
+    }
+    if (!splitAtSelfPinches(rings[r], partner, out.rings)) return false;
+  }
+  if (anySelf && !visitsTwice(out.rings, k, table, twice)) return false;
+
+  // At each pinch, the pass whose corner is cut.
+  std::vector<std::size_t> start(out.rings.size() + 1, 0);
+  for (std::size_t r = 0; r < out.rings.size(); ++r) start[r + 1] = start[r] + out.rings[r].size();
+  std::vector<char> cut(start.back(), 0);
+  const auto pointOf = [&](const Visit& at) {
+    return out.rings[std::size_t(at.ring)][std::size_t(at.index)];
+  };
+  // A step from v shorter than 2^(k-1), and than 2^2k / |longest edge| (with a margin for the
+  // rounding of the doubles).
+  const double reach = std::ldexp(1.0, 2 * k) / std::sqrt(longest) * 0.5;
+  const double stepBound = std::min(reach, std::ldexp(1.0, k - 1));
+  const auto shortStep = [&](IPoint d) {
+    const IPoint s = primitiveStep(d);
+    return std::sqrt(double(s.x) * double(s.x) + double(s.y) * double(s.y)) < stepBound;
+  };
+  for (std::size_t t = 0; t < twice.size(); t += 2) {
+    const Visit& first = twice[t];
+    const Visit& second = twice[t + 1];
+    if (first.ring == second.ring) return false;
+    IPoint a, b, c, d;
+    edgesAt(out.rings, first, a, b);
+    edgesAt(out.rings, second, c, d);
+    // Touching, not crossing: c and d in one sector between a and b.
+    const bool cInAB = inSector(a, b, c);
+    if (cInAB != inSector(a, b, d)) return false;
+    // Each pass's free sector: from in-edge to out-edge counter-clockwise, or the other one.
+    const bool firstFreeAB = !cInAB;
+    const bool secondFreeCD = !inSector(c, d, a);
+    const auto convex = [](IPoint from, IPoint to) { return crossSign(from, to) > 0; };
+    const bool cutFirst = firstFreeAB ? convex(a, b) : convex(b, a);
+    const bool cutSecond = secondFreeCD ? convex(c, d) : convex(d, c);
+    if (!cutFirst && !cutSecond) return false;
+    const Visit& cutAt = cutFirst ? first : second;
+    if (cutFirst ? !shortStep(a) || !shortStep(b) : !shortStep(c) || !shortStep(d)) return false;
+    cut[start[std::size_t(cutAt.ring)] + std::size_t(cutAt.index)] = 1;
+    out.pinches.push_back({pointOf(first), first.ring, second.ring});
+  }
+
+  // The separated rings: each cut vertex replaced by the grid points a step along its edges.
+  out.separated.resize(out.rings.size());
+  for (std::size_t r = 0; r < out.rings.size(); ++r) {
+    const std::vector<IPoint>& ring = out.rings[r];
+    std::vector<IPoint>& separated = out.separated[r];
+    separated.clear();
+    const std::size_t n = ring.size();
+    for (std::size_t i = 0; i < n; ++i) {
+      const IPoint v = ring[i];
+      if (cut[start[r] + i] == 0) {
+        separated.push_back(v);
+        continue;
+      }
+      const IPoint in = primitiveStep(minus(ring[(i + n - 1) % n], v));
+      const IPoint on = primitiveStep(minus(ring[(i + 1) % n], v));
+      separated.push_back({v.x + in.x, v.y + in.y});
+      separated.push_back({v.x + on.x, v.y + on.y});
+    }
+  }
+  return true;
+}
+
+}  // namespace roiclip::detail

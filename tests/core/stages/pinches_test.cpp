@@ -1,0 +1,178 @@
+// SPDX-License-Identifier: MIT
+// Rings touching at vertices (src/core/pinches.cpp): the sweep-free paths on rings split and
+// separated at their pinches, against the general path polygon for polygon and vertex for
+// vertex; and the configurations separatePinches() must refuse.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <string>
+#include <vector>
+
+#include <roiclip/roiclip.hpp>
+
+#include "pipeline.hpp"
+#include "stage_support.hpp"
+#include "support/oracle.hpp"
+#include "support/same_set.hpp"
+#include "workspace.hpp"
+
+namespace roiclip {
+namespace {
+
+const FillRule kRules[] = {FillRule::EvenOdd, FillRule::NonZero, FillRule::Positive,
+                           FillRule::Negative};
+
+// A star-shaped ring around `centre` with `through` as one of its vertices (at its angle), the
+// others at random angles and radii in [0.6, 1] of `radius`, rounded to integers; starting at
+// `through`.
+Path starThrough(std::mt19937& rng, int n, Point centre, double radius, Point through) {
+  const double at = std::atan2(through.y - centre.y, through.x - centre.x);
+  std::vector<double> angles;
+  for (int i = 0; i < n; ++i) {
+    const double offset = std::uniform_real_distribution<double>(0.15, 2 * M_PI - 0.15)(rng);
+    angles.push_back(offset);
+  }
+  std::sort(angles.begin(), angles.end());
+  Path path{through};
+  for (const double a : angles) {
+    const double r = radius * std::uniform_real_distribution<double>(0.6, 1.0)(rng);
+    path.emplace_back(std::round(centre.x + r * std::cos(at + a)),
+                      std::round(centre.y + r * std::sin(at + a)));
+  }
+  return path;
+}
+
+Path reversed(Path p) {
+  std::reverse(p.begin() + 1, p.end());  // still starting at the shared vertex
+  return p;
+}
+
+// The snapped rings of `paths` on the grid intersect() fits, with the ROI.
+detail::Rings snapped(const Paths& paths, const Path& roi) {
+  const Grid grid = resolveGrid(Options{}.grid, paths, Paths{roi});
+  return detail::snapRings(paths, 0, grid);
+}
+
+// Whether the pinch path can take the set (separated rings simple).
+bool separable(const Paths& paths, const Path& roi) {
+  detail::PinchedRings pinched;
+  detail::Workspace ws;
+  return detail::separatePinches(snapped(paths, roi), pinched) &&
+         detail::ringsAreSimple(pinched.separated, ws.chains);
+}
+
+// Random sets of rings touching at vertices: two rings sharing a vertex (side by side, or one
+// inside the other touching it), the same joined into one ring through the vertex twice (a
+// figure eight, or a loop inside), either part reversed; against ROIs that hold all of it or cut
+// it; every fill rule.
+TEST(StagePinches, RandomTouchingRingsMatchTheGeneralPath) {
+  std::mt19937 rng(20261206);
+  int taken = 0, total = 0;
+  for (int trial = 0; trial < 400; ++trial) {
+    const Point v(200, 200);
+    const double angle = std::uniform_real_distribution<double>(0, 2 * M_PI)(rng);
+    const Point dir(std::cos(angle), std::sin(angle));
+    Path a, b;
+    if (trial % 2 == 0) {  // side by side
+      a = starThrough(rng, 6 + int(rng() % 10), v + dir * 60.0, 60, v);
+      b = starThrough(rng, 6 + int(rng() % 10), v - dir * 50.0, 50, v);
+    } else {  // b inside a, touching it at v
+      a = starThrough(rng, 6 + int(rng() % 10), v + dir * 80.0, 80, v);
+      b = starThrough(rng, 4 + int(rng() % 6), v + dir * 25.0, 22, v);
+    }
+    if (rng() % 2 == 0) a = reversed(a);
+    if (rng() % 2 == 0) b = reversed(b);
+    Paths set;
+    if (trial % 3 == 0) {  // one ring through v twice
+      Path joined = a;
+      joined.insert(joined.end(), b.begin(), b.end());
+      set.push_back(joined);
+    } else {
+      set = {a, b};
+    }
+    // A far ring now and then (a set of more than the touching ones).
+    if (trial % 5 == 0) set.push_back(stages::starShapedRing(rng, 8, Point(330, 330), 20, 0.7));
+    std::vector<Point> corners;
+    const double lo = trial % 4 == 0 ? 0 : 100, hi = trial % 4 == 0 ? 400 : 300;
+    for (int i = 0; i < 3 + int(rng() % 6); ++i) {
+      corners.emplace_back(std::round(std::uniform_real_distribution<double>(lo, hi)(rng)),
+                           std::round(std::uniform_real_distribution<double>(lo, hi)(rng)));
+    }
+    const Path roi = testing::convexHull({Path(corners.begin(), corners.end())}, trial % 2 == 1)[0];
+    if (roi.size() < 3) continue;
+    const FillRule rule = kRules[trial % 4];
+    const std::string what = "trial " + std::to_string(trial);
+    testing::expectSameSet(intersect(set, {roi}, rule),
+                           stages::generalIntersect(set, {roi}, rule, rule), what);
+    taken += separable(set, roi) ? 1 : 0;
+    ++total;
+  }
+  EXPECT_GT(taken, total / 2);  // most sets touch only at the shared vertex
+}
+
+// Pixel-corner pinches: unit squares touching diagonally (a chessboard), one ring each, and the
+// same squares' outline as one ring through each shared corner twice.
+TEST(StagePinches, ChessboardSquaresMatchTheGeneralPath) {
+  Paths squares;
+  for (int i = 0; i < 6; ++i) {
+    for (int j = 0; j < 6; ++j) {
+      if ((i + j) % 2 != 0) continue;
+      const double x = 10 * i, y = 10 * j;
+      squares.push_back({{x, y}, {x + 10, y}, {x + 10, y + 10}, {x, y + 10}});
+    }
+  }
+  const Path roi{{-5, -5}, {65, -5}, {65, 65}, {-5, 65}};
+  const Path cut{{3, -5}, {60, 12}, {45, 62}, {-5, 30}};
+  for (const FillRule rule : kRules) {
+    for (const Path& c : {roi, cut}) {
+      testing::expectSameSet(intersect(squares, {c}, rule),
+                             stages::generalIntersect(squares, {c}, rule, rule), "chessboard");
+    }
+  }
+  EXPECT_TRUE(separable(squares, roi));
+  // Two squares touching at a corner, as one ring: a figure eight.
+  const Paths eight{{{0, 0}, {10, 0}, {10, 10}, {20, 10}, {20, 20}, {10, 20}, {10, 10}, {0, 10}}};
+  for (const FillRule rule : kRules) {
+    testing::expectSameSet(intersect(eight, {roi}, rule),
+                           stages::generalIntersect(eight, {roi}, rule, rule), "figure eight");
+  }
+  EXPECT_TRUE(separable(eight, roi));
+  const PolygonSet out = intersect(eight, {roi}, FillRule::NonZero);
+  ASSERT_EQ(out.polygons.size(), 2U);  // split at the shared corner, as stages 1 to 4 do
+}
+
+TEST(StagePinches, RefusesWhatItCannotSeparate) {
+  const Path roi{{-50, -50}, {50, -50}, {50, 50}, {-50, 50}};
+  // Two rings crossing at a shared vertex.
+  const Paths crossing{{{0, 0}, {20, 10}, {20, -10}},
+                       {{0, 0}, {-20, -10}, {-20, 10}},
+                       {{0, 0}, {10, 20}, {-10, 20}}};
+  detail::PinchedRings pinched;
+  EXPECT_FALSE(detail::separatePinches(snapped(crossing, roi), pinched));  // three visits
+  const Paths x{{{0, 0}, {20, 10}, {20, 20}, {-20, -10}, {-20, -20}},
+                {{0, 0}, {-10, 20}, {-20, 20}, {10, -20}, {20, -20}}};
+  EXPECT_FALSE(separable(x, roi));
+  // Edges overlapping at the shared vertex.
+  const Paths overlap{{{0, 0}, {20, 0}, {20, 20}}, {{0, 0}, {10, 0}, {10, -20}}};
+  EXPECT_FALSE(detail::separatePinches(snapped(overlap, roi), pinched));
+  // A vertex of a third ring on an edge at the pinch: the kept pass there touches it.
+  const Paths onEdge{
+      {{0, 0}, {10, 10}, {0, 10}}, {{0, 0}, {-10, -10}, {0, -10}}, {{-5, 5}, {5, -5}, {10, -20}}};
+  EXPECT_FALSE(separable(onEdge, roi));
+  // No vertex visited twice.
+  EXPECT_FALSE(detail::separatePinches(snapped({{{0, 0}, {10, 0}, {0, 10}}}, roi), pinched));
+  // Unit coordinates on the unit grid: no low zero bits to cut a corner with.
+  const detail::Rings unit{{{0, 0}, {10, 0}, {10, 10}}, {{10, 10}, {20, 10}, {20, 20}}};
+  EXPECT_FALSE(detail::separatePinches(unit, pinched));
+  for (const Paths* set : {&x, &overlap, &onEdge}) {
+    for (const FillRule rule : kRules) {
+      testing::expectSameSet(intersect(*set, {roi}, rule),
+                             stages::generalIntersect(*set, {roi}, rule, rule), "refused");
+    }
+  }
+}
+
+}  // namespace
+}  // namespace roiclip
