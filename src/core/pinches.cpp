@@ -44,77 +44,6 @@ struct Visit {
   int ring, index;
 };
 
-// A slot of visitsTwice()'s hash table.
-struct Slot {
-  IPoint p;
-  Visit first;
-  int count = 0;  // 0: empty
-};
-
-// The points visited twice, as consecutive pairs of visits, in ring order of their second
-// visit (an open-addressing hash table over the vertices, whose low `k` bits are zero). False
-// when a point is visited three times or more.
-bool visitsTwice(const Rings& rings, int k, std::vector<Slot>& table, std::vector<Visit>& twice) {
-  twice.clear();
-  std::size_t count = 0;
-  for (const std::vector<IPoint>& ring : rings) count += ring.size();
-  int bits = 4;
-  while ((std::size_t{1} << bits) < 2 * count) ++bits;
-  table.assign(std::size_t{1} << bits, Slot{});
-  const std::size_t mask = (std::size_t{1} << bits) - 1;
-  for (std::size_t r = 0; r < rings.size(); ++r) {
-    const std::vector<IPoint>& ring = rings[r];
-    for (std::size_t i = 0; i < ring.size(); ++i) {
-      const IPoint p = ring[i];
-      const std::uint64_t h = std::uint64_t(p.x >> k) * 0x9E3779B97F4A7C15ULL ^
-                              std::uint64_t(p.y >> k) * 0xC2B2AE3D27D4EB4FULL;
-      std::size_t at = std::size_t(h >> (64 - bits));
-      while (table[at].count != 0 && !(table[at].p == p)) at = (at + 1) & mask;
-      Slot& slot = table[at];
-      const Visit visit{int(r), int(i)};
-      if (slot.count == 0) {
-        slot.p = p;
-        slot.first = visit;
-      } else if (slot.count == 1) {
-        twice.push_back(slot.first);
-        twice.push_back(visit);
-      } else {
-        return false;
-      }
-      ++slot.count;
-    }
-  }
-  return true;
-}
-
-// Splits ring `ring` at the vertices it visits twice (`partner[i]`: the other visit of vertex
-// i, or -1), the stack method: a vertex seen again while its first visit is on the stack pops
-// the loop between them as a ring. False when a loop has fewer than three vertices.
-bool splitAtSelfPinches(const std::vector<IPoint>& ring, const std::vector<int>& partner,
-                        Rings& out) {
-  const int n = int(ring.size());
-  std::vector<int> stack, position(std::size_t(n), -1);
-  const auto emit = [&](std::size_t from) {
-    if (stack.size() - from < 3) return false;
-    std::vector<IPoint>& loop = out.emplace_back();
-    for (std::size_t s = from; s < stack.size(); ++s) {
-      loop.push_back(ring[std::size_t(stack[s])]);
-      position[std::size_t(stack[s])] = -1;
-    }
-    stack.resize(from);
-    return true;
-  };
-  for (int t = 0; t < n; ++t) {
-    const int i = partner[std::size_t(t)];
-    if (i >= 0 && i < t && position[std::size_t(i)] >= 0) {
-      if (!emit(std::size_t(position[std::size_t(i)]))) return false;
-    }
-    position[std::size_t(t)] = int(stack.size());
-    stack.push_back(t);
-  }
-  return emit(0);
-}
-
 // Directions from a vertex, ordered by angle from the positive x axis.
 bool lowerHalf(IPoint d) { return d.y < 0 || (d.y == 0 && d.x < 0); }
 bool angleLess(IPoint u, IPoint w) {
@@ -151,6 +80,83 @@ bool fourWays(IPoint a, IPoint b, IPoint c, IPoint d) {
   return true;
 }
 
+// The points visited twice, as consecutive pairs of visits, in ring order of their second
+// visit (an open-addressing hash table over the vertices, whose low `k` bits are zero). False
+// when a point is visited three times or more. A slot holds a point's first visit (ring in the
+// high half, index in the low one), kTwice once it has a second; all ones when empty.
+bool visitsTwice(const Rings& rings, int k, std::vector<std::uint64_t>& table,
+                 std::vector<Visit>& twice) {
+  constexpr std::uint64_t kEmpty = ~std::uint64_t{0}, kTwice = std::uint64_t{1} << 62;
+  twice.clear();
+  std::size_t count = 0;
+  for (const std::vector<IPoint>& ring : rings) count += ring.size();
+  int bits = 4;
+  while ((std::size_t{1} << bits) < 2 * count) ++bits;
+  table.assign(std::size_t{1} << bits, kEmpty);
+  const std::size_t mask = (std::size_t{1} << bits) - 1;
+  for (std::size_t r = 0; r < rings.size(); ++r) {
+    const std::vector<IPoint>& ring = rings[r];
+    for (std::size_t i = 0; i < ring.size(); ++i) {
+      const IPoint p = ring[i];
+      const std::uint64_t h = std::uint64_t(p.x >> k) * 0x9E3779B97F4A7C15ULL ^
+                              std::uint64_t(p.y >> k) * 0xC2B2AE3D27D4EB4FULL;
+      std::size_t at = std::size_t(h >> (64 - bits));
+      Visit first{};
+      for (;; at = (at + 1) & mask) {
+        if (table[at] == kEmpty) break;
+        first = {int((table[at] & ~kTwice) >> 32), int(std::uint32_t(table[at]))};
+        if (rings[std::size_t(first.ring)][std::size_t(first.index)] == p) break;
+      }
+      std::uint64_t& slot = table[at];
+      if (slot == kEmpty) {
+        slot = std::uint64_t(r) << 32 | std::uint64_t(i);
+        continue;
+      }
+      if ((slot & kTwice) != 0) return false;
+      // Two visits: their four edges point four ways, and two rings touch without crossing
+      // (checked here, so that most sets that fail stop at their first bad vertex).
+      const Visit visit{int(r), int(i)};
+      IPoint a, b, c, d;
+      edgesAt(rings, first, a, b);
+      edgesAt(rings, visit, c, d);
+      if (!fourWays(a, b, c, d)) return false;
+      if (visit.ring != first.ring && inSector(a, b, c) != inSector(a, b, d)) return false;
+      twice.push_back(first);
+      twice.push_back(visit);
+      slot |= kTwice;
+    }
+  }
+  return true;
+}
+
+// Splits ring `ring` at the vertices it visits twice (`partner[i]`: the other visit of vertex
+// i, or -1), the stack method: a vertex seen again while its first visit is on the stack pops
+// the loop between them as a ring. False when a loop has fewer than three vertices.
+bool splitAtSelfPinches(const std::vector<IPoint>& ring, const std::vector<int>& partner,
+                        Rings& out) {
+  const int n = int(ring.size());
+  std::vector<int> stack, position(std::size_t(n), -1);
+  const auto emit = [&](std::size_t from) {
+    if (stack.size() - from < 3) return false;
+    std::vector<IPoint>& loop = out.emplace_back();
+    for (std::size_t s = from; s < stack.size(); ++s) {
+      loop.push_back(ring[std::size_t(stack[s])]);
+      position[std::size_t(stack[s])] = -1;
+    }
+    stack.resize(from);
+    return true;
+  };
+  for (int t = 0; t < n; ++t) {
+    const int i = partner[std::size_t(t)];
+    if (i >= 0 && i < t && position[std::size_t(i)] >= 0) {
+      if (!emit(std::size_t(position[std::size_t(i)]))) return false;
+    }
+    position[std::size_t(t)] = int(stack.size());
+    stack.push_back(t);
+  }
+  return emit(0);
+}
+
 // The grid step from the origin towards d: d divided by the gcd of its components.
 IPoint primitiveStep(IPoint d) {
   const std::int64_t g = std::gcd(d.x < 0 ? -d.x : d.x, d.y < 0 ? -d.y : d.y);
@@ -164,34 +170,24 @@ bool separatePinches(const Rings& rings, PinchedRings& out) {
   out.separated.clear();
   out.pinches.clear();
   std::uint64_t bits = 0;
-  std::int64_t widest = 0;  // the largest coordinate difference along an edge
+  IPoint low = rings.empty() || rings[0].empty() ? IPoint{} : rings[0][0], high = low;
   for (const std::vector<IPoint>& ring : rings) {
     if (ring.size() < 3) return false;
-    IPoint q = ring.back();
     for (const IPoint p : ring) {
       bits |= std::uint64_t(p.x) | std::uint64_t(p.y);
-      widest = std::max({widest, p.x - q.x, q.x - p.x, p.y - q.y, q.y - p.y});
-      q = p;
+      low = {std::min(low.x, p.x), std::min(low.y, p.y)};
+      high = {std::max(high.x, p.x), std::max(high.y, p.y)};
     }
   }
-  // Every edge is at most sqrt(2) widest long.
-  const double longest = 2.0 * double(widest) * double(widest);
+  // Every edge lies in the box: at most its diagonal long.
+  const double w = double(high.x - low.x), h = double(high.y - low.y);
+  const double longest = w * w + h * h;
   if (bits == 0) return false;
   const int k = __builtin_ctzll(bits);
   if (k < kMinLowZeroBits) return false;
-  std::vector<Slot> table;
+  std::vector<std::uint64_t> table;
   std::vector<Visit> twice;
   if (!visitsTwice(rings, k, table, twice) || twice.empty()) return false;
-
-  // The checks that need no split first (the four edges at a vertex are the same after it):
-  // most sets that fail, fail here, before any ring is copied.
-  for (std::size_t t = 0; t < twice.size(); t += 2) {
-    IPoint a, b, c, d;
-    edgesAt(rings, twice[t], a, b);
-    edgesAt(rings, twice[t + 1], c, d);
-    if (!fourWays(a, b, c, d)) return false;
-    if (twice[t].ring != twice[t + 1].ring && inSector(a, b, c) != inSector(a, b, d)) return false;
-  }
 
   // Each ring visiting a vertex twice, split there.
   std::vector<int> partner;
