@@ -22,7 +22,8 @@
 //    vertex is a multiple of 2^k (a fitted grid's units have their low bits zero), so an edge
 //    that does not pass through v lies at least 2^2k / |edge| from it, and the corner cut
 //    reaches at most one step from v; the stage asks that a step be shorter than that bound
-//    for the longest edge of the set. An edge that passes through v touches the kept pass.
+//    for the diagonal of the set's box (no edge is longer), and than 2^(k-1) (cut corners of
+//    two pinches stay apart). An edge that passes through v touches the kept pass.
 //  - The nesting of the separated rings is the nesting of the rings (the corners are small and
 //    hold nothing), so the chain sweep's nesting serves the rings themselves.
 #include <algorithm>
