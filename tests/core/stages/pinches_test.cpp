@@ -63,13 +63,28 @@ bool separable(const Paths& paths, const Path& roi) {
          detail::ringsAreSimple(pinched.separated, ws.chains);
 }
 
+// The region of `paths` through the stage and the nesting of the separated rings, against
+// simplify() on stages 0 to 4. Whether the stage took them.
+bool regionMatches(const Paths& paths, FillRule rule, const std::string& what) {
+  const Grid grid = resolveGrid(Options{}.grid, paths);
+  detail::PinchedRings pinched;
+  detail::Workspace ws;
+  if (!detail::separatePinches(detail::snapRings(paths, 0, grid), pinched) ||
+      !detail::ringsAreSimple(pinched.separated, ws.chains)) {
+    return false;
+  }
+  testing::expectSameSet(detail::simpleRingsRegion(pinched.rings, rule, ws.chains, grid),
+                         stages::generalSimplify(paths, rule), what + ", region");
+  return true;
+}
+
 // Random sets of rings touching at vertices: two rings sharing a vertex (side by side, or one
 // inside the other touching it), the same joined into one ring through the vertex twice (a
 // figure eight, or a loop inside), either part reversed; against ROIs that hold all of it or cut
 // it; every fill rule.
 TEST(StagePinches, RandomTouchingRingsMatchTheGeneralPath) {
   std::mt19937 rng(20261206);
-  int taken = 0, total = 0;
+  int taken = 0, total = 0, regions = 0;
   for (int trial = 0; trial < 400; ++trial) {
     const Point v(200, 200);
     const double angle = std::uniform_real_distribution<double>(0, 2 * M_PI)(rng);
@@ -107,9 +122,11 @@ TEST(StagePinches, RandomTouchingRingsMatchTheGeneralPath) {
     testing::expectSameSet(intersect(set, {roi}, rule),
                            stages::generalIntersect(set, {roi}, rule, rule), what);
     taken += separable(set, roi) ? 1 : 0;
+    regions += regionMatches(set, rule, what) ? 1 : 0;
     ++total;
   }
   EXPECT_GT(taken, total / 2);  // most sets touch only at the shared vertex
+  EXPECT_GT(regions, total / 2);
 }
 
 // Pixel-corner pinches: unit squares touching diagonally (a chessboard), one ring each, and the
@@ -139,6 +156,10 @@ TEST(StagePinches, ChessboardSquaresMatchTheGeneralPath) {
                            stages::generalIntersect(eight, {roi}, rule, rule), "figure eight");
   }
   EXPECT_TRUE(separable(eight, roi));
+  for (const FillRule rule : kRules) {
+    EXPECT_TRUE(regionMatches(eight, rule, "figure eight"));
+    EXPECT_TRUE(regionMatches(squares, rule, "chessboard"));
+  }
   const PolygonSet out = intersect(eight, {roi}, FillRule::NonZero);
   ASSERT_EQ(out.polygons.size(), 2U);  // split at the shared corner, as stages 1 to 4 do
 }
