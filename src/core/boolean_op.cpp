@@ -7,6 +7,7 @@
 
 #include <roiclip/roiclip.hpp>
 
+#include "convex_sides.hpp"
 #include "pipeline.hpp"
 #include "workspace.hpp"
 
@@ -37,31 +38,26 @@ PolygonSet resolve(const BooleanSpec& spec, const Grid& grid, Workspace& ws,
 }
 
 // The sweep-free paths for rings that touch only at vertices (separatePinches()): into `out`,
-// or false.
+// or false. `inside`: ringsInsideConvex(rings).
 bool intersectPinched(const Rings& rings, FillRule rule, const SnappedOperand& convex,
-                      const Grid& grid, Workspace& ws, std::optional<bool> inClosed,
-                      PolygonSet& out) {
+                      const Grid& grid, Workspace& ws, bool inside, PolygonSet& out) {
   PinchedRings pinched;
   if (!separatePinches(rings, pinched) || !ringsAreSimple(pinched.separated, ws.chains)) {
     return false;
   }
-  const std::vector<IPoint>& c = convex.rings[0];
-  const bool inside = inClosed ? *inClosed : ringsInsideConvex(rings, c, convex.convex);
   if (inside) {
     out = simpleRingsRegion(pinched.rings, rule, ws.chains, grid);
     return true;
   }
   // The pairs touching strictly inside C; a pinch on C's boundary: the general path.
+  const std::vector<IPoint>& c = convex.rings[0];
+  if (c.size() > std::size_t(kMaxSides)) return false;
+  const SideLines sides(c, convex.convex);
   std::vector<std::pair<int, int>> touching;
   for (const PinchedRings::Pinch& pinch : pinched.pinches) {
-    bool outside = false, onLine = false;
-    for (std::size_t j = 0; j < c.size(); ++j) {
-      const int o = orientInGrid(c[j], c[(j + 1) % c.size()], pinch.at) * convex.convex;
-      outside = outside || o < 0;
-      onLine = onLine || o == 0;
-    }
-    if (outside) continue;
-    if (onLine) return false;
+    const SideLines::Masks m = sides.classify(pinch.at);
+    if ((m.left | m.zeros) != sides.all()) continue;  // outside C
+    if (m.left != sides.all()) return false;          // on C's boundary
     touching.emplace_back(pinch.ring, pinch.other);
   }
   return intersectSimpleRingsConvex(pinched.rings, rule, c, convex.convex, grid, ws.chains,
@@ -97,14 +93,12 @@ PolygonSet intersectRings(const Rings& rings, FillRule rule, const SnappedOperan
         return direct;
       }
     }
-  }
-  // Rings touching only at vertices (pixel contours meeting at a pixel corner): the same paths
-  // on the rings split there, when the rings with a corner cut off at each such vertex are
-  // simple and apart.
-  // Only for sets: a single ring that fails the test is mostly one that crosses itself (W2's
-  // epitrochoid: separating its repeated vertices cost 40% more instructions).
-  if (rings.size() > 1 && intersectPinched(rings, rule, convex, grid, ws, inClosed, direct)) {
-    return direct;
+    // Rings touching only at vertices (pixel contours meeting at a pixel corner): the same paths
+    // on the rings split there, when the rings with a corner cut off at each such vertex are
+    // simple and apart. Only for sets: a single ring that fails the test is mostly one that
+    // crosses itself (W2's epitrochoid: separating its repeated vertices cost 40% more
+    // instructions).
+    if (intersectPinched(rings, rule, convex, grid, ws, inside, direct)) return direct;
   }
   // The sweep-free attempts are done: their large arrays do not stay through the general path
   // (on a 1M-vertex contour the chains and crossings took 73 MB of its peak). Smaller ones are

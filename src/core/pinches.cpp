@@ -46,9 +46,8 @@ struct Visit {
 };
 
 // Directions from a vertex, ordered by angle from the positive x axis.
-bool lowerHalf(IPoint d) { return d.y < 0 || (d.y == 0 && d.x < 0); }
 bool angleLess(IPoint u, IPoint w) {
-  const bool lu = lowerHalf(u), lw = lowerHalf(w);
+  const bool lu = inLowerHalfTurn(u), lw = inLowerHalfTurn(w);
   if (lu != lw) return lw;
   return crossSign(u, w) > 0;
 }

@@ -288,6 +288,10 @@ inline int crossSign(IPoint d1, IPoint d2) {
   return (l > r) - (l < r);
 }
 
+/// Whether direction d (not zero) points into the lower half-turn [pi, 2 pi) of angles from the
+/// positive x axis; with crossSign(), the order of directions by angle.
+inline bool inLowerHalfTurn(IPoint d) { return d.y < 0 || (d.y == 0 && d.x < 0); }
+
 /// The point a + (num / den) * (b - a) on the line through grid points a, b; den > 0. Crossings
 /// on the grid come back with W == 1.
 inline void pointAlong(IPoint a, IPoint b, i128 num, i128 den, XPoint& out) {

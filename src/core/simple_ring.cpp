@@ -406,10 +406,9 @@ bool turnsOnce(const std::vector<IPoint>& ring) {
   // in magnitude, so it passes 0 at most once. Collinear consecutive edges, a spike (a half turn)
   // or a straight-on vertex (none), are not simple (ringIsSimple()): the chain sweep relies on
   // this test for them.
-  const auto lower = [](IPoint d) { return d.y < 0 || (d.y == 0 && d.x < 0); };
   const IPoint* const p = ring.data();
   IPoint d{p[0].x - p[n - 1].x, p[0].y - p[n - 1].y};
-  bool fromLower = lower(d);
+  bool fromLower = inLowerHalfTurn(d);
   long long turns = 0;
   for (std::size_t i = 0; i < n; ++i) {
     const IPoint b = p[i + 1 == n ? 0 : i + 1];
@@ -417,7 +416,7 @@ bool turnsOnce(const std::vector<IPoint>& ring) {
     // The sign of d x e, exact for grid points (|differences| <= 2^31: products below 2^62).
     const std::int64_t l = d.x * e.y, r = d.y * e.x;
     if (l == r) return false;  // a spike or a straight-on vertex: not simple (see ringIsSimple())
-    const bool toLower = lower(e);
+    const bool toLower = inLowerHalfTurn(e);
     // Across angle 0: from the lower half-turn turning left, or from the upper turning right.
     turns += int(fromLower && !toLower && l > r) - int(!fromLower && toLower && l < r);
     d = e;
