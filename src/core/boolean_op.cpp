@@ -45,20 +45,17 @@ bool intersectPinched(const Rings& rings, FillRule rule, const SnappedOperand& c
   if (!separatePinches(rings, pinched) || !ringsAreSimple(pinched.separated, ws.chains)) {
     return false;
   }
-  if (inside) {
-    out = simpleRingsRegion(pinched.rings, rule, ws.chains, grid);
-    return true;
-  }
+  if (inside) return pinchedRingsRegion(pinched, rule, ws.chains, grid, out);
   // The pairs touching strictly inside C; a pinch on C's boundary: the general path.
   const std::vector<IPoint>& c = convex.rings[0];
   if (c.size() > std::size_t(kMaxSides)) return false;
   const SideLines sides(c, convex.convex);
-  std::vector<std::pair<int, int>> touching;
+  std::vector<PinchedRings::Pinch> touching;
   for (const PinchedRings::Pinch& pinch : pinched.pinches) {
     const SideLines::Masks m = sides.classify(pinch.at);
     if ((m.left | m.zeros) != sides.all()) continue;  // outside C
     if (m.left != sides.all()) return false;          // on C's boundary
-    touching.emplace_back(pinch.ring, pinch.other);
+    touching.push_back(pinch);
   }
   return intersectSimpleRingsConvex(pinched.rings, rule, c, convex.convex, grid, ws.chains,
                                     ws.weiler, out, nullptr, &touching);

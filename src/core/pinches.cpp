@@ -26,13 +26,19 @@
 //    two pinches stay apart). An edge that passes through v touches the kept pass.
 //  - The nesting of the separated rings is the nesting of the rings (the corners are small and
 //    hold nothing), so the chain sweep's nesting serves the rings themselves.
+//  - The rings are the result's rings only as stages 1 to 4 would split them (pinchesKeepRings()):
+//    the pinches between the rings of one face (an outer ring and its holes) must join them in a
+//    forest. A hole touching its outer ring at two pixel corners cuts the face in two.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <numeric>
 #include <vector>
 
+#include <boost/pending/disjoint_sets.hpp>
+
 #include "pipeline.hpp"
+#include "workspace.hpp"
 
 namespace roiclip::detail {
 namespace {
@@ -271,6 +277,38 @@ bool separatePinches(const Rings& rings, PinchedRings& out) {
       separated.push_back({v.x + on.x, v.y + on.y});
     }
   }
+  return true;
+}
+
+bool pinchesKeepRings(const std::vector<PinchedRings::Pinch>& pinches,
+                      const std::vector<RingNesting>& nesting,
+                      const std::vector<char>* joinedInFace) {
+  // Nodes: the rings, then one per face for the rings joined in it.
+  const std::size_t n = nesting.size();
+  boost::disjoint_sets_with_storage<> joined(2 * n);
+  for (const PinchedRings::Pinch& pinch : pinches) {
+    const RingNesting& a = nesting[std::size_t(pinch.ring)];
+    const RingNesting& b = nesting[std::size_t(pinch.other)];
+    if (!a.inResult || !b.inResult) continue;  // the vertex is on the region's boundary once
+    const int face = a.filledInside ? pinch.ring : a.resultAround;
+    if (face != (b.filledInside ? pinch.other : b.resultAround)) continue;  // two faces
+    if (face < 0) return false;
+    const auto node = [&](int r) {
+      return joinedInFace != nullptr && (*joinedInFace)[std::size_t(r)] != 0 ? n + std::size_t(face)
+                                                                             : std::size_t(r);
+    };
+    const std::size_t r = joined.find_set(node(pinch.ring)), q = joined.find_set(node(pinch.other));
+    if (r == q) return false;  // a cycle
+    joined.link(r, q);
+  }
+  return true;
+}
+
+bool pinchedRingsRegion(const PinchedRings& pinched, FillRule rule, ChainScratch& scratch,
+                        const Grid& grid, PolygonSet& out) {
+  nestSimpleRings(pinched.rings, rule, scratch);
+  if (!pinchesKeepRings(pinched.pinches, scratch.nesting)) return false;
+  out = nestedRingsRegion(pinched.rings, scratch, grid);
   return true;
 }
 

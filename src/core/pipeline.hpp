@@ -25,6 +25,7 @@ struct TraceScratch;    // workspace.hpp: the working arrays of traceContours()
 struct NestingScratch;  // workspace.hpp: the working arrays of buildNesting()
 struct ChainScratch;    // workspace.hpp: the working arrays of ringIsSimple()
 struct WeilerScratch;   // workspace.hpp: the working arrays of intersectSimpleConvex()
+struct RingNesting;     // workspace.hpp: one ring's place in the nesting of simple rings
 class OutputFrame;      // output.hpp: exact points to doubles
 
 /// Operand index: 0 = subject, 1 = clip.
@@ -424,6 +425,8 @@ bool ringsAreSimple(const Rings& rings, ChainScratch& scratch);
 /// nesting, exactly as stages 1 to 4 emit it (one pass over the rings, nesting from the sweep).
 PolygonSet simpleRingsRegion(const Rings& rings, FillRule rule, ChainScratch& scratch,
                              const Grid& grid);
+/// The same on the nesting nestSimpleRings() left in `scratch` for `rings`.
+PolygonSet nestedRingsRegion(const Rings& rings, ChainScratch& scratch, const Grid& grid);
 
 /// The nesting of a set of rings that ringsAreSimple() accepted (just before, on `scratch`),
 /// under `rule`: scratch.nesting gets each ring's smallest vertex, the innermost ring around it,
@@ -434,22 +437,6 @@ void nestSimpleRings(const Rings& rings, FillRule rule, ChainScratch& scratch);
 /// its lower edge there (where the trace of its lowest piece starts).
 Path simpleRingPath(const std::vector<IPoint>& ring, LowestVertex lowest, bool hole,
                     const OutputFrame& frame);
-
-/// intersectSimpleConvex() for a set of rings that ringsAreSimple() accepted (just before, on
-/// `chains`): Weiler-Atherton over every ring that bounds the region, holes walked clockwise;
-/// rings inside C stay whole, and a hole inside C goes to the walked ring along its outer ring's
-/// face. False (the general path) under intersectSimpleConvex()'s conditions, and when a ring
-/// that bounds the region runs around C, or walked rings along one outer ring's face are several
-/// and a hole inside C would need a point test to choose among them.
-/// `known`, when not null: what is known of each ring's vertices (as for one ring above).
-/// `touchingInC`, when not null: pairs of rings that touch at a vertex strictly inside C (the
-/// pinches of separatePinches()); false when both of a pair cross C's boundary (one walked ring
-/// could then visit that vertex twice, which stages 1 to 4 split).
-bool intersectSimpleRingsConvex(const Rings& rings, FillRule rule,
-                                const std::vector<IPoint>& convex, int convexOrientation,
-                                const Grid& grid, ChainScratch& chains, WeilerScratch& scratch,
-                                PolygonSet& out, const KnownSides* known = nullptr,
-                                const std::vector<std::pair<int, int>>* touchingInC = nullptr);
 
 /// Rings touching themselves or each other only at vertices, as separatePinches() prepares them
 /// (pinches.cpp).
@@ -468,11 +455,43 @@ struct PinchedRings {
   };
   std::vector<Pinch> pinches;
 };
+/// intersectSimpleConvex() for a set of rings that ringsAreSimple() accepted (just before, on
+/// `chains`): Weiler-Atherton over every ring that bounds the region, holes walked clockwise;
+/// rings inside C stay whole, and a hole inside C goes to the walked ring along its outer ring's
+/// face. False (the general path) under intersectSimpleConvex()'s conditions, and when a ring
+/// that bounds the region runs around C, or walked rings along one outer ring's face are several
+/// and a hole inside C would need a point test to choose among them.
+/// `known`, when not null: what is known of each ring's vertices (as for one ring above).
+/// `touchingInC`, when not null: the pinches of separatePinches() strictly inside C; false
+/// unless pinchesKeepRings() holds with the rings across C's boundary of each face counted as
+/// one (the walked rings may join them).
+bool intersectSimpleRingsConvex(const Rings& rings, FillRule rule,
+                                const std::vector<IPoint>& convex, int convexOrientation,
+                                const Grid& grid, ChainScratch& chains, WeilerScratch& scratch,
+                                PolygonSet& out, const KnownSides* known = nullptr,
+                                const std::vector<PinchedRings::Pinch>* touchingInC = nullptr);
+
 /// Prepares rings for the sweep-free paths where they touch only at vertices (pixel contours
 /// meeting at a pixel corner). False when a vertex is visited three times or more, no vertex
 /// twice, two edges at a pinch overlap, two rings cross at one, or the vertices lack the common
 /// low zero bits the cut needs (a fitted grid's pixel coordinates have about 20; 12 needed).
 bool separatePinches(const Rings& rings, PinchedRings& out);
+/// Whether stages 1 to 4 return the pinched rings as they are, with `nesting` as
+/// nestSimpleRings() leaves it for them. Stages 1 to 4 pair the edges at a pinch around each
+/// filled sector, then split a ring that visits a vertex twice. Rings of two faces of the region
+/// (two outer rings side by side, an island in a hole) stay as they are. The rings of one face
+/// (an outer ring and its holes) that pinches join are traced as one ring and split again, which
+/// gives them back when those pinches join them in a forest, other rings around a cycle (a hole
+/// touching its outer ring at two vertices leaves two polygons, not one with that hole).
+/// `joinedInFace`, when not null: rings that count as one with the others so marked in their
+/// face.
+bool pinchesKeepRings(const std::vector<PinchedRings::Pinch>& pinches,
+                      const std::vector<RingNesting>& nesting,
+                      const std::vector<char>* joinedInFace = nullptr);
+/// The region of pinched rings whose separated rings ringsAreSimple() accepted (just before, on
+/// `scratch`), as simpleRingsRegion(); false unless pinchesKeepRings().
+bool pinchedRingsRegion(const PinchedRings& pinched, FillRule rule, ChainScratch& scratch,
+                        const Grid& grid, PolygonSet& out);
 
 /// Whether every vertex of the rings lies inside the convex ring (orientation
 /// `convexOrientation`) or on its boundary: then so does everything they fill, and their

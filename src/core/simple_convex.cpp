@@ -473,7 +473,7 @@ bool intersectSimpleRingsConvex(const Rings& rings, FillRule rule,
                                 const std::vector<IPoint>& convex, int convexOrientation,
                                 const Grid& grid, ChainScratch& chains, WeilerScratch& w,
                                 PolygonSet& out, const KnownSides* known,
-                                const std::vector<std::pair<int, int>>* touchingInC) {
+                                const std::vector<PinchedRings::Pinch>* touchingInC) {
   out = {};
   if (convex.size() > std::size_t(kMaxSides)) return false;
   nestSimpleRings(rings, rule, chains);
@@ -529,9 +529,9 @@ bool intersectSimpleRingsConvex(const Rings& rings, FillRule rule,
   }
   w.crossStart[ringCount] = int(w.crossings.size());
   if (touchingInC != nullptr) {
-    for (const auto& [a, b] : *touchingInC) {
-      if (place[std::size_t(a)] == kAcross && place[std::size_t(b)] == kAcross) return false;
-    }
+    std::vector<char> across(ringCount);
+    for (std::size_t r = 0; r < ringCount; ++r) across[r] = place[r] == kAcross ? 1 : 0;
+    if (!pinchesKeepRings(*touchingInC, rn, &across)) return false;
   }
 
   // The walked rings are outer rings (each runs along C somewhere). For each ring across C that

@@ -481,6 +481,10 @@ void nestSimpleRings(const Rings& rings, FillRule rule, ChainScratch& scratch) {
 PolygonSet simpleRingsRegion(const Rings& rings, FillRule rule, ChainScratch& scratch,
                              const Grid& grid) {
   nestSimpleRings(rings, rule, scratch);
+  return nestedRingsRegion(rings, scratch, grid);
+}
+
+PolygonSet nestedRingsRegion(const Rings& rings, ChainScratch& scratch, const Grid& grid) {
   std::vector<RingNesting>& rn = scratch.nesting;
   const OutputFrame frame(grid);
   PolygonSet result;

@@ -10,6 +10,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <optional>
 #include <random>
 #include <sstream>
@@ -140,6 +141,27 @@ inline std::string structureProblems(const PolygonSet& set) {
     }
     rings.push_back(&p.outer);
     for (const Path& h : p.holes) rings.push_back(&h);
+    // A connected interior (OGC): the polygon's rings touching at vertices join in a forest
+    // (around a cycle of touches, the interior falls apart).
+    std::vector<std::size_t> component(1 + p.holes.size());
+    for (std::size_t r = 0; r < component.size(); ++r) component[r] = r;
+    const auto root = [&](std::size_t r) {
+      while (component[r] != r) r = component[r];
+      return r;
+    };
+    std::map<std::pair<double, double>, std::size_t> firstRing;
+    for (std::size_t r = 0; r < component.size(); ++r) {
+      for (const Point& v : r == 0 ? p.outer : p.holes[r - 1]) {
+        const auto [at, fresh] = firstRing.emplace(std::make_pair(v.x, v.y), r);
+        if (fresh || at->second == r) continue;
+        const std::size_t a = root(at->second), b = root(r);
+        if (a == b) {
+          out << "polygon " << i << ": interior not connected (rings touch in a cycle)\n";
+          break;
+        }
+        component[a] = b;
+      }
+    }
   }
   // Every ring simple: no repeated vertex, no two edges crossing or overlapping (all rings
   // against all, since rings may only touch at vertices). Quadratic: small results only.
