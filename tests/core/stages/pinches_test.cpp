@@ -202,6 +202,69 @@ TEST(StagePinches, CyclesOfPinchesMatchTheGeneralPath) {
   }
 }
 
+// Random holes touching their outer ring at two or three vertices (a cycle of pinches in one
+// face: the stage must refuse or match), with an island touching the hole now and then (a pinch
+// between two faces, which it may take), either ring reversed, against ROIs that hold them or
+// cut them, under every rule.
+TEST(StagePinches, RandomHolesTouchingTheirOuterRingMatchTheGeneralPath) {
+  std::mt19937 rng(20261207);
+  const Point c(200, 200);
+  int taken = 0;
+  for (int trial = 0; trial < 300; ++trial) {
+    // A convex outer ring: points on a circle at sorted random angles.
+    const int n = 8 + int(rng() % 10);
+    std::vector<double> angles;
+    for (int i = 0; i < n; ++i) {
+      angles.push_back(std::uniform_real_distribution<double>(0, 2 * M_PI)(rng));
+    }
+    std::sort(angles.begin(), angles.end());
+    Path outer;
+    for (const double a : angles) {
+      outer.emplace_back(std::round(c.x + 150 * std::cos(a)), std::round(c.y + 150 * std::sin(a)));
+    }
+    // The hole through `touches` of the outer ring's vertices, inward points between them.
+    const int touches = 2 + int(trial % 2);
+    std::vector<int> at;
+    for (int t = 0; t < touches; ++t) at.push_back(t * n / touches + int(rng() % 2));
+    Path hole;
+    for (int t = 0; t < touches; ++t) {
+      const int from = at[std::size_t(t)],
+                to = t + 1 < touches ? at[std::size_t(t) + 1] : at[0] + n;
+      hole.push_back(outer[std::size_t(from % n)]);
+      const double a0 = angles[std::size_t(from % n)] + (from >= n ? 2 * M_PI : 0);
+      const double a1 = angles[std::size_t(to % n)] + (to >= n ? 2 * M_PI : 0);
+      const int inner = 1 + int(rng() % 3);
+      for (int i = 1; i <= inner; ++i) {
+        const double a = a0 + (a1 - a0) * i / (inner + 1);
+        const double r = std::uniform_real_distribution<double>(40, 110)(rng);
+        hole.emplace_back(std::round(c.x + r * std::cos(a)), std::round(c.y + r * std::sin(a)));
+      }
+    }
+    Paths set{rng() % 2 == 0 ? outer : reversed(outer), rng() % 2 == 0 ? hole : reversed(hole)};
+    if (trial % 3 == 0) {
+      // An island in the hole touching it at the hole's first inward point.
+      const Point v = hole[1];
+      const Point towards = (c - v) * (12.0 / std::max(1.0, std::hypot(c.x - v.x, c.y - v.y)));
+      set.push_back({v, v + towards + Point(-towards.y, towards.x) * 0.5,
+                     v + towards - Point(-towards.y, towards.x) * 0.5});
+      for (Point& p : set.back()) p = Point(std::round(p.x), std::round(p.y));
+    }
+    const Path all{{0, 0}, {400, 0}, {400, 400}, {0, 400}};
+    const Path cut{
+        {0, 0}, {220 + double(rng() % 60), 0}, {180 + double(rng() % 60), 400}, {0, 400}};
+    const FillRule rule = kRules[trial % 4];
+    const std::string what = "trial " + std::to_string(trial);
+    for (const Path& roi : {all, cut}) {
+      testing::expectSameSet(intersect(set, {roi}, rule),
+                             stages::generalIntersect(set, {roi}, rule, rule), what);
+    }
+    taken += regionMatches(set, rule, what) ? 1 : 0;
+    EXPECT_TRUE(testing::structureProblems(intersect(set, {all}, rule)).empty()) << what;
+  }
+  // Under the positive and negative rules one ring in two bounds nothing, and the set is taken.
+  EXPECT_GT(taken, 30);
+}
+
 TEST(StagePinches, RefusesWhatItCannotSeparate) {
   const Path roi{{-50, -50}, {50, -50}, {50, 50}, {-50, 50}};
   // Two rings crossing at a shared vertex.
