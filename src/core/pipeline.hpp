@@ -481,8 +481,9 @@ bool separatePinches(const Rings& rings, PinchedRings& out);
 /// filled sector, then split a ring that visits a vertex twice. Rings of two faces of the region
 /// (two outer rings side by side, an island in a hole) stay as they are. The rings of one face
 /// (an outer ring and its holes) that pinches join are traced as one ring and split again, which
-/// gives them back when those pinches join them in a forest, other rings around a cycle (a hole
-/// touching its outer ring at two vertices leaves two polygons, not one with that hole).
+/// gives them back when those pinches join them in a forest, and other rings when they join them
+/// in a cycle (a hole touching its outer ring at two vertices leaves two polygons, not one with
+/// that hole).
 /// `joinedInFace`, when not null: rings that count as one with the others so marked in their
 /// face.
 bool pinchesKeepRings(const std::vector<PinchedRings::Pinch>& pinches,

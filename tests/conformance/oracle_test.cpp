@@ -4,6 +4,7 @@
 #include <cmath>
 #include <optional>
 #include <random>
+#include <string>
 
 #include <gtest/gtest.h>
 
@@ -24,6 +25,26 @@ TEST(Oracle, OrientationIsExactWhereDoublesRoundToZero) {
   EXPECT_EQ(orientation(a, b, Point(0.5, 0.5)), 0);
   EXPECT_EQ(orientation(a, b, Point(-1e300, -1e300)), 0);
   EXPECT_EQ(orientation(Point(0, 0), Point(1, 0), Point(0.5, 1e-300)), 1);
+}
+
+// A hole may touch its outer ring (or another hole) at one point; around a cycle of such
+// touches the polygon's interior falls apart (OGC: not valid).
+TEST(Oracle, StructureSeesAnInteriorThatIsNotConnected) {
+  Polygon p;
+  p.outer = {{0, 40}, {45, 40}, {40, 20}, {40, 0}, {0, 0}, {-5, 20}};  // negative shoelace
+  p.holes = {{{-5, 20}, {20, 10}, {40, 20}, {20, 30}}};                // positive: touches twice
+  PolygonSet twice;
+  twice.polygons = {p};
+  EXPECT_NE(structureProblems(twice).find("interior not connected"), std::string::npos);
+  p.holes = {{{-5, 20}, {20, 10}, {30, 20}, {20, 30}}};  // touches once
+  PolygonSet once;
+  once.polygons = {p};
+  EXPECT_EQ(structureProblems(once), "");
+  // Two holes touching each other twice cut off the part between them.
+  p.holes = {{{5, 20}, {20, 10}, {30, 20}, {20, 15}}, {{5, 20}, {20, 25}, {30, 20}, {20, 30}}};
+  PolygonSet lens;
+  lens.polygons = {p};
+  EXPECT_NE(structureProblems(lens).find("interior not connected"), std::string::npos);
 }
 
 TEST(Oracle, WindingNumberFollowsOrientation) {

@@ -18,6 +18,7 @@
 #include <utility>
 #include <vector>
 
+#include <boost/pending/disjoint_sets.hpp>
 #include <glm/common.hpp>
 
 #include <roiclip/roiclip.hpp>
@@ -143,25 +144,21 @@ inline std::string structureProblems(const PolygonSet& set) {
     for (const Path& h : p.holes) rings.push_back(&h);
     // A connected interior (OGC): the polygon's rings touching at vertices join in a forest
     // (around a cycle of touches, the interior falls apart).
-    std::vector<std::size_t> component(1 + p.holes.size());
-    for (std::size_t r = 0; r < component.size(); ++r) component[r] = r;
-    const auto root = [&](std::size_t r) {
-      while (component[r] != r) r = component[r];
-      return r;
-    };
+    const std::size_t ringCount = 1 + p.holes.size();
+    boost::disjoint_sets_with_storage<> joined(ringCount);
     std::map<std::pair<double, double>, std::size_t> firstRing;
-    for (std::size_t r = 0; r < component.size(); ++r) {
+    bool cycle = false;
+    for (std::size_t r = 0; r < ringCount && !cycle; ++r) {
       for (const Point& v : r == 0 ? p.outer : p.holes[r - 1]) {
         const auto [at, fresh] = firstRing.emplace(std::make_pair(v.x, v.y), r);
         if (fresh || at->second == r) continue;
-        const std::size_t a = root(at->second), b = root(r);
-        if (a == b) {
-          out << "polygon " << i << ": interior not connected (rings touch in a cycle)\n";
-          break;
-        }
-        component[a] = b;
+        const std::size_t a = joined.find_set(at->second), b = joined.find_set(r);
+        cycle = a == b;
+        if (cycle) break;
+        joined.link(a, b);
       }
     }
+    if (cycle) out << "polygon " << i << ": interior not connected (rings touch in a cycle)\n";
   }
   // Every ring simple: no repeated vertex, no two edges crossing or overlapping (all rings
   // against all, since rings may only touch at vertices). Quadratic: small results only.
