@@ -51,18 +51,7 @@ struct Visit {
   int ring, index;
 };
 
-// Directions from a vertex, ordered by angle from the positive x axis.
-bool angleLess(IPoint u, IPoint w) {
-  const bool lu = inLowerHalfTurn(u), lw = inLowerHalfTurn(w);
-  if (lu != lw) return lw;
-  return crossSign(u, w) > 0;
-}
-bool sameDirection(IPoint u, IPoint w) { return !angleLess(u, w) && !angleLess(w, u); }
-// Whether direction x lies strictly inside the sector swept counter-clockwise from a to b (x
-// differs from both).
-bool inSector(IPoint a, IPoint b, IPoint x) {
-  return angleLess(a, b) ? angleLess(a, x) && angleLess(x, b) : angleLess(a, x) || angleLess(x, b);
-}
+bool sameDirection(IPoint u, IPoint w) { return !ccwBefore(u, w) && !ccwBefore(w, u); }
 
 IPoint minus(IPoint a, IPoint b) { return {a.x - b.x, a.y - b.y}; }
 
@@ -126,7 +115,7 @@ bool visitsTwice(const Rings& rings, int k, std::vector<std::uint64_t>& table,
       edgesAt(rings, first, a, b);
       edgesAt(rings, visit, c, d);
       if (!fourWays(a, b, c, d)) return false;
-      if (visit.ring != first.ring && inSector(a, b, c) != inSector(a, b, d)) return false;
+      if (visit.ring != first.ring && inSectorCcw(a, b, c) != inSectorCcw(a, b, d)) return false;
       twice.push_back(first);
       twice.push_back(visit);
       slot |= kTwice;
@@ -243,11 +232,11 @@ bool separatePinches(const Rings& rings, PinchedRings& out) {
     edgesAt(out.rings, first, a, b);
     edgesAt(out.rings, second, c, d);
     // Touching, not crossing: c and d in one sector between a and b.
-    const bool cInAB = inSector(a, b, c);
-    if (cInAB != inSector(a, b, d)) return false;
+    const bool cInAB = inSectorCcw(a, b, c);
+    if (cInAB != inSectorCcw(a, b, d)) return false;
     // Each pass's free sector: from in-edge to out-edge counter-clockwise, or the other one.
     const bool firstFreeAB = !cInAB;
-    const bool secondFreeCD = !inSector(c, d, a);
+    const bool secondFreeCD = !inSectorCcw(c, d, a);
     const auto convex = [](IPoint from, IPoint to) { return crossSign(from, to) > 0; };
     const bool cutFirst = firstFreeAB ? convex(a, b) : convex(b, a);
     const bool cutSecond = secondFreeCD ? convex(c, d) : convex(d, c);

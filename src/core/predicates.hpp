@@ -292,6 +292,20 @@ inline int crossSign(IPoint d1, IPoint d2) {
 /// positive x axis; with crossSign(), the order of directions by angle.
 inline bool inLowerHalfTurn(IPoint d) { return d.y < 0 || (d.y == 0 && d.x < 0); }
 
+/// Directions (not zero) in counter-clockwise order of their angle from the positive x axis
+/// (exact): whether a comes before b.
+inline bool ccwBefore(IPoint a, IPoint b) {
+  const bool la = inLowerHalfTurn(a), lb = inLowerHalfTurn(b);
+  if (la != lb) return lb;
+  return crossSign(a, b) > 0;
+}
+
+/// Whether direction c lies strictly inside the counter-clockwise sector from a to b (three
+/// distinct directions).
+inline bool inSectorCcw(IPoint a, IPoint b, IPoint c) {
+  return ccwBefore(a, b) ? ccwBefore(a, c) && ccwBefore(c, b) : ccwBefore(a, c) || ccwBefore(c, b);
+}
+
 /// The point a + (num / den) * (b - a) on the line through grid points a, b; den > 0. Crossings
 /// on the grid come back with W == 1.
 inline void pointAlong(IPoint a, IPoint b, i128 num, i128 den, XPoint& out) {

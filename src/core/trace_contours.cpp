@@ -27,18 +27,6 @@ struct Ray {
   bool outgoing = false;
 };
 
-// Counter-clockwise order of directions, starting at the positive x axis (exact).
-bool ccwBefore(IPoint a, IPoint b) {
-  const auto half = [](IPoint d) { return d.y > 0 || (d.y == 0 && d.x > 0) ? 0 : 1; };
-  if (half(a) != half(b)) return half(a) < half(b);
-  return crossSign(a, b) > 0;
-}
-
-// c lies strictly inside the counter-clockwise sector from a to b (three distinct directions).
-bool inSectorCcw(IPoint a, IPoint b, IPoint c) {
-  return ccwBefore(a, b) ? ccwBefore(a, c) && ccwBefore(c, b) : ccwBefore(a, c) || ccwBefore(c, b);
-}
-
 // Pairs the `count` pieces arriving at vertex v with the `count` (> 1) leaving it: each
 // incoming piece with the outgoing piece next to it clockwise. Apart from traceContours' loop
 // (rare on most inputs, and it keeps that loop small).
