@@ -61,6 +61,24 @@ bool intersectPinched(const Rings& rings, FillRule rule, const SnappedOperand& c
                                     ws.weiler, out, nullptr, &touching);
 }
 
+// Whether a ring has an edge along a side's line of C (m sides) and a vertex outside C, as
+// `known` has their vertices: Weiler-Atherton refuses such a ring (appendCrossings()).
+bool edgeAlongSide(const Rings& rings, const KnownSides* known, std::size_t m) {
+  const unsigned all = (1U << m) - 1;
+  for (std::size_t r = 0; r < rings.size(); ++r) {
+    const unsigned *left = known[r].left, *on = known[r].onLine;
+    if (on == nullptr) continue;
+    const std::size_t n = rings[r].size();
+    bool along = false;
+    for (std::size_t i = 0, j = n - 1; i < n && !along; j = i++) along = (on[i] & on[j]) != 0;
+    if (!along) continue;
+    for (std::size_t i = 0; i < n; ++i) {
+      if ((left[i] | on[i]) != all) return true;
+    }
+  }
+  return false;
+}
+
 // Some rings AND one convex ring: the sweep-free paths where they apply, else the pre-clip and
 // stages 1 to 4. `budget` is what is left of Limits::maxCrossings; the sweep's crossings are
 // taken from it. `inClosed`, when known (groupRingsForConvex()), is ringsInsideConvex(rings);
@@ -95,7 +113,14 @@ PolygonSet intersectRings(const Rings& rings, FillRule rule, const SnappedOperan
     // simple and apart. Only for sets: a single ring that fails the test is mostly one that
     // crosses itself (W2's epitrochoid: separating its repeated vertices cost 40% more
     // instructions).
-    if (intersectPinched(rings, rule, convex, grid, ws, inside, direct)) return direct;
+    // A ring across C with an edge along a side's line: Weiler-Atherton refuses it, whatever
+    // the pinch stage makes of the rings (W5 scene_01's 400-vertex group).
+    const std::size_t m = convex.rings[0].size();
+    const bool alongSide = !inside && known != nullptr && m <= std::size_t(kMaxSides) &&
+                           edgeAlongSide(rings, known, m);
+    if (!alongSide && intersectPinched(rings, rule, convex, grid, ws, inside, direct)) {
+      return direct;
+    }
   }
   // The sweep-free attempts are done: their large arrays do not stay through the general path
   // (on a 1M-vertex contour the chains and crossings took 73 MB of its peak). Smaller ones are
