@@ -40,9 +40,11 @@ PolygonSet resolve(const BooleanSpec& spec, const Grid& grid, Workspace& ws,
 // The sweep-free paths for rings that touch only at vertices (separatePinches()): into `out`,
 // or false. `inside`: ringsInsideConvex(rings).
 bool intersectPinched(const Rings& rings, FillRule rule, const SnappedOperand& convex,
-                      const Grid& grid, Workspace& ws, bool inside, PolygonSet& out) {
+                      const Grid& grid, Workspace& ws, bool inside, PolygonSet& out,
+                      bool* overlapping = nullptr) {
   PinchedRings pinched;
-  if (!separatePinches(rings, pinched) || !ringsAreSimple(pinched.separated, ws.chains)) {
+  if (!separatePinches(rings, pinched, overlapping) ||
+      !ringsAreSimple(pinched.separated, ws.chains)) {
     return false;
   }
   if (inside) return pinchedRingsRegion(pinched, rule, ws.chains, grid, out);
@@ -77,6 +79,24 @@ bool edgeAlongSide(const Rings& rings, const KnownSides* known, std::size_t m) {
     }
   }
   return false;
+}
+
+// The sweep-free paths for rings whose edges run along each other from shared vertices, on the
+// rings with those edges cancelled (cancelOverlaps()): into `out`, or false.
+bool intersectOverlapping(const Rings& rings, FillRule rule, const SnappedOperand& convex,
+                          const Grid& grid, Workspace& ws, bool inside, PolygonSet& out) {
+  Rings reduced;
+  bool touching = false;
+  ws.generalPathUsed = true;  // the stage's arrays are recycled with the general path's
+  if (!cancelOverlaps(rings, reduced, touching, ws.overlaps)) return false;
+  if (touching) return intersectPinched(reduced, rule, convex, grid, ws, inside, out);
+  if (!ringsAreSimple(reduced, ws.chains)) return false;
+  if (inside) {
+    out = simpleRingsRegion(reduced, rule, ws.chains, grid);
+    return true;
+  }
+  return intersectSimpleRingsConvex(reduced, rule, convex.rings[0], convex.convex, grid, ws.chains,
+                                    ws.weiler, out);
 }
 
 // Some rings AND one convex ring: the sweep-free paths where they apply, else the pre-clip and
@@ -118,7 +138,10 @@ PolygonSet intersectRings(const Rings& rings, FillRule rule, const SnappedOperan
     const std::size_t m = convex.rings[0].size();
     const bool alongSide = !inside && known != nullptr && m <= std::size_t(kMaxSides) &&
                            edgeAlongSide(rings, known, m);
-    if (!alongSide && intersectPinched(rings, rule, convex, grid, ws, inside, direct)) {
+    bool overlapping = false;
+    if (!alongSide &&
+        (intersectPinched(rings, rule, convex, grid, ws, inside, direct, &overlapping) ||
+         (overlapping && intersectOverlapping(rings, rule, convex, grid, ws, inside, direct)))) {
       return direct;
     }
   }
@@ -129,6 +152,7 @@ PolygonSet intersectRings(const Rings& rings, FillRule rule, const SnappedOperan
   const auto release = [](auto& v) { releaseEachAbove(kKeptOutputBytes, v); };
   ws.chains.forEach(release);
   ws.weiler.forEach(release);
+  ws.overlaps.forEach(release);
   BooleanSpec spec;
   spec.subjectRule = rule;
   spec.maxCrossings = budget;

@@ -80,7 +80,7 @@ bool fourWays(IPoint a, IPoint b, IPoint c, IPoint d) {
 // when a point is visited three times or more. A slot holds a point's first visit (ring in the
 // high half, index in the low one), kTwice once it has a second; all ones when empty.
 bool visitsTwice(const Rings& rings, int k, std::vector<std::uint64_t>& table,
-                 std::vector<Visit>& twice) {
+                 std::vector<Visit>& twice, bool& overlapping) {
   constexpr std::uint64_t kEmpty = ~std::uint64_t{0}, kTwice = std::uint64_t{1} << 62;
   twice.clear();
   std::size_t count = 0;
@@ -107,14 +107,20 @@ bool visitsTwice(const Rings& rings, int k, std::vector<std::uint64_t>& table,
         slot = std::uint64_t(r) << 32 | std::uint64_t(i);
         continue;
       }
-      if ((slot & kTwice) != 0) return false;
+      if ((slot & kTwice) != 0) {
+        overlapping = true;  // as at a wall's junction; cancelOverlaps() may take it
+        return false;
+      }
       // Two visits: their four edges point four ways, and two rings touch without crossing
       // (checked here, so that most sets that fail stop at their first bad vertex).
       const Visit visit{int(r), int(i)};
       IPoint a, b, c, d;
       edgesAt(rings, first, a, b);
       edgesAt(rings, visit, c, d);
-      if (!fourWays(a, b, c, d)) return false;
+      if (!fourWays(a, b, c, d)) {
+        overlapping = true;
+        return false;
+      }
       if (visit.ring != first.ring && inSectorCcw(a, b, c) != inSectorCcw(a, b, d)) return false;
       twice.push_back(first);
       twice.push_back(visit);
@@ -160,7 +166,8 @@ IPoint primitiveStep(IPoint d) {
 
 }  // namespace
 
-bool separatePinches(const Rings& rings, PinchedRings& out) {
+bool separatePinches(const Rings& rings, PinchedRings& out, bool* overlapping) {
+  bool overlap = false;
   out.rings.clear();
   out.separated.clear();
   out.pinches.clear();
@@ -182,7 +189,10 @@ bool separatePinches(const Rings& rings, PinchedRings& out) {
   if (k < kMinLowZeroBits) return false;
   std::vector<std::uint64_t> table;
   std::vector<Visit> twice;
-  if (!visitsTwice(rings, k, table, twice) || twice.empty()) return false;
+  if (!visitsTwice(rings, k, table, twice, overlap) || twice.empty()) {
+    if (overlapping != nullptr) *overlapping = overlap;
+    return false;
+  }
 
   // Each ring visiting a vertex twice, split there.
   std::vector<int> partner;
@@ -207,7 +217,7 @@ bool separatePinches(const Rings& rings, PinchedRings& out) {
     }
     if (!splitAtSelfPinches(rings[r], partner, out.rings)) return false;
   }
-  if (anySelf && !visitsTwice(out.rings, k, table, twice)) return false;
+  if (anySelf && !visitsTwice(out.rings, k, table, twice, overlap)) return false;
 
   // At each pinch, the pass whose corner is cut.
   std::vector<std::size_t> start(out.rings.size() + 1, 0);

@@ -25,6 +25,7 @@ struct TraceScratch;    // workspace.hpp: the working arrays of traceContours()
 struct NestingScratch;  // workspace.hpp: the working arrays of buildNesting()
 struct ChainScratch;    // workspace.hpp: the working arrays of ringIsSimple()
 struct WeilerScratch;   // workspace.hpp: the working arrays of intersectSimpleConvex()
+struct OverlapScratch;  // workspace.hpp: the working arrays of cancelOverlaps()
 struct RingNesting;     // workspace.hpp: one ring's place in the nesting of simple rings
 class OutputFrame;      // output.hpp: exact points to doubles
 
@@ -475,7 +476,17 @@ bool intersectSimpleRingsConvex(const Rings& rings, FillRule rule,
 /// meeting at a pixel corner). False when a vertex is visited three times or more, no vertex
 /// twice, two edges at a pinch overlap, two rings cross at one, or the vertices lack the common
 /// low zero bits the cut needs (a fitted grid's pixel coordinates have about 20; 12 needed).
-bool separatePinches(const Rings& rings, PinchedRings& out);
+/// `overlapping`, when not null, is set when the refusal came from two edges leaving a point the
+/// same way or a point visited three times (cancelOverlaps() may take such a set).
+bool separatePinches(const Rings& rings, PinchedRings& out, bool* overlapping = nullptr);
+/// Prepares rings whose edges run along each other (overlaps.cpp): edges on one line split at
+/// the ends of the others inside them, equal edges in opposite directions cancelled, the rest
+/// linked into rings with the same winding numbers off the cancelled edges, each visiting each
+/// point once, straight-on vertices dropped. `touching`: whether the rings still share a point
+/// (the pinch stage's case). False when nothing cancels, or when two edges run the same way
+/// along each other, a point has several cancelled ends to pair, or a ring goes straight on
+/// through another's point or back along itself.
+bool cancelOverlaps(const Rings& rings, Rings& out, bool& touching, OverlapScratch& scratch);
 /// Whether stages 1 to 4 return the pinched rings as they are, with `nesting` as
 /// nestSimpleRings() leaves it for them. Stages 1 to 4 pair the edges at a pinch around each
 /// filled sector, then split a ring that visits a vertex twice. Rings of two faces of the region

@@ -19,6 +19,7 @@ void Workspace::recycleAll() {
   weiler.forEach([](auto& v) { recycle(v); });
   if (!generalPathUsed) return;
   generalPathUsed = false;
+  overlaps.forEach([](auto& v) { recycle(v); });
   recycle(pieces);
   recycle(exactRights);
   recycle(starts);
@@ -88,6 +89,7 @@ void Workspace::release() {
   std::vector<InputEdge>().swap(edges);
   chains.forEach([](auto& v) { std::remove_reference_t<decltype(v)>().swap(v); });
   weiler.forEach([](auto& v) { std::remove_reference_t<decltype(v)>().swap(v); });
+  overlaps.forEach([](auto& v) { std::remove_reference_t<decltype(v)>().swap(v); });
   trace.forEach([](auto& v) { std::remove_reference_t<decltype(v)>().swap(v); });
   nesting.forEach([](auto& v) { std::remove_reference_t<decltype(v)>().swap(v); });
   forEachLent([](auto& v) { std::remove_reference_t<decltype(v)>().swap(v); });

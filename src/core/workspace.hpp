@@ -173,6 +173,65 @@ struct ChainScratch {
     f(nesting);
   }
 };
+/// The working arrays of cancelOverlaps() (overlaps.cpp).
+struct OverlapScratch {
+  /// The line of an edge: its direction reduced and turned to point right (or up), and its
+  /// offset along the normal.
+  struct Line {
+    IPoint u;
+    std::int64_t offset = 0;
+    bool operator==(const Line& o) const { return u == o.u && offset == o.offset; }
+  };
+  /// An edge's extent along its line.
+  struct Span {
+    std::int64_t lo, hi;
+    int edge;
+  };
+  /// A point to insert in an edge (by its first vertex), at position `along` from its start.
+  struct Split {
+    int edge;
+    std::int64_t along;
+    IPoint at;
+  };
+  // The line pass: a table of lines (the last edge on each, chained by nextOnLine).
+  std::vector<int> lineHead, nextOnLine, sharedLines, first;
+  std::vector<Line> lines;
+  std::vector<Span> spans;
+  std::vector<std::int64_t> stops;
+  std::vector<Split> splits;
+  Rings split;  ///< the rings with the splits inserted
+  // The vertices, flat: successor, predecessor, the next visit of the same point (circular,
+  // -1: visited once) and the point's first visit; the table of points.
+  std::vector<IPoint> points;
+  std::vector<int> next, prev, same, rep, sharedPoints, succ, stack, onStack;
+  std::vector<std::uint64_t> table;
+  std::vector<char> cancelled, claimed, walked;
+  template <class F>
+  void forEach(F f) {
+    f(lineHead);
+    f(nextOnLine);
+    f(sharedLines);
+    f(first);
+    f(lines);
+    f(spans);
+    f(stops);
+    f(splits);
+    f(split);
+    f(points);
+    f(next);
+    f(prev);
+    f(same);
+    f(rep);
+    f(sharedPoints);
+    f(succ);
+    f(stack);
+    f(onStack);
+    f(table);
+    f(cancelled);
+    f(claimed);
+    f(walked);
+  }
+};
 /// A crossing of a simple ring's boundary with a convex ring's (simple_convex.cpp).
 struct BoundaryCrossing {
   XPoint x;
@@ -380,13 +439,16 @@ struct Workspace {
   ChainScratch chains;
   // The simple-ring AND convex-ring case (simple_convex.cpp).
   WeilerScratch weiler;
+  // Overlapping edges cancelled (overlaps.cpp).
+  OverlapScratch overlaps;
   // Tracing (trace_contours.cpp).
   TraceScratch trace;
   // Nesting (nesting.cpp).
   NestingScratch nesting;
 
-  /// Set by the stages of the general path (preclipConvex(), resolveGeneral(), splitEdges()),
-  /// the only ones that take arrays beyond `chains`, `weiler` and `operandRings`: recycleAll()
+  /// Set by the stages of the general path (preclipConvex(), resolveGeneral(), splitEdges())
+  /// and by cancelOverlaps(), the only ones that take arrays beyond `chains`, `weiler` and
+  /// `operandRings`: recycleAll()
   /// recycles the others only after a call that set it. A call on a sweep-free path (W4's small
   /// contours) then walks 21 arrays, not 59.
   bool generalPathUsed = false;
