@@ -38,7 +38,12 @@ using Span = OverlapScratch::Span;
 using Split = OverlapScratch::Split;
 
 IPoint minus(IPoint a, IPoint b) { return {a.x - b.x, a.y - b.y}; }
-bool sameWay(IPoint u, IPoint w) { return crossSign(u, w) == 0 && u.x * w.x + u.y * w.y > 0; }
+// For parallel directions (not zero): whether they point the same way (components compared by
+// sign: a dot product of two 2^31 vectors would not fit).
+bool alike(IPoint u, IPoint w) {
+  return u.x != 0 ? (u.x > 0) == (w.x > 0) : (u.y > 0) == (w.y > 0);
+}
+bool sameWay(IPoint u, IPoint w) { return crossSign(u, w) == 0 && alike(u, w); }
 
 // A table of 2^bits slots, at least twice `count`.
 int tableBits(std::size_t count) {
@@ -328,7 +333,7 @@ bool cancelOverlaps(const Rings& input, Rings& out, bool& touching, OverlapScrat
       const IPoint din = minus(v, s.points[std::size_t(before)]);
       const IPoint dout = outEdge(e);
       if (crossSign(din, dout) == 0) {
-        if (din.x * dout.x + din.y * dout.y < 0) return false;           // back along itself
+        if (!alike(din, dout)) return false;                             // back along itself
         if (s.same[std::size_t(e)] >= 0 && passes(e) > 1) return false;  // straight through a touch
         continue;
       }
