@@ -110,18 +110,23 @@ PolygonSet intersectRings(const Rings& rings, FillRule rule, const SnappedOperan
   // One contour that does not touch itself (most contours): Weiler-Atherton, no sweep, when
   // its boundary crosses the convex ring's only transversally.
   PolygonSet direct;
+  ws.chains.touched = false;
   if (rings.size() == 1 &&
       intersectSimpleConvex(rings[0], rule, convex.rings[0], convex.convex, grid, ws.chains,
                             ws.weiler, direct, known != nullptr ? known[0] : KnownSides{})) {
     return direct;
   }
-  // Several contours touching nothing: all inside the convex ring (a contour with its holes
-  // inside the ROI), the region they fill, nested by the chain sweep; else Weiler-Atherton over
-  // the rings that bound it.
-  if (rings.size() > 1) {
+  // A single ring goes on only when the simple-ring test stopped where it touches itself (a
+  // pixel contour meeting itself at a pixel corner, W5 scene_05's 123-vertex contour), not
+  // where it crosses itself (W2's epitrochoid: separating the repeated vertices of every ring
+  // that failed the test cost it 40% more instructions).
+  if (rings.size() > 1 || ws.chains.touched) {
     const bool inside =
         inClosed ? *inClosed : ringsInsideConvex(rings, convex.rings[0], convex.convex);
-    if (ringsAreSimple(rings, ws.chains)) {
+    // Several contours touching nothing: all inside the convex ring (a contour with its holes
+    // inside the ROI), the region they fill, nested by the chain sweep; else Weiler-Atherton
+    // over the rings that bound it.
+    if (rings.size() > 1 && ringsAreSimple(rings, ws.chains)) {
       if (inside) return simpleRingsRegion(rings, rule, ws.chains, grid);
       if (intersectSimpleRingsConvex(rings, rule, convex.rings[0], convex.convex, grid, ws.chains,
                                      ws.weiler, direct, known)) {
@@ -130,18 +135,20 @@ PolygonSet intersectRings(const Rings& rings, FillRule rule, const SnappedOperan
     }
     // Rings touching only at vertices (pixel contours meeting at a pixel corner): the same paths
     // on the rings split there, when the rings with a corner cut off at each such vertex are
-    // simple and apart. Only for sets: a single ring that fails the test is mostly one that
-    // crosses itself (W2's epitrochoid: separating its repeated vertices cost 40% more
-    // instructions).
-    // A ring across C with an edge along a side's line: Weiler-Atherton refuses it, whatever
-    // the pinch stage makes of the rings (W5 scene_01's 400-vertex group).
+    // simple and apart. Edges running along each other from a shared point (a hole sharing a
+    // one-pixel wall with its contour): the same paths once they are cancelled. A ring across C
+    // with an edge along a side's line: Weiler-Atherton refuses it, whatever these stages make
+    // of the rings (W5 scene_01's 400-vertex group). A single ring does not try the overlap
+    // stage: the W5 contours that would (in scenes 01, 06 and 07) fail after it, at a vertex on
+    // an edge of another part, so the attempt cost more than it saved.
     const std::size_t m = convex.rings[0].size();
     const bool alongSide = !inside && known != nullptr && m <= std::size_t(kMaxSides) &&
                            edgeAlongSide(rings, known, m);
     bool overlapping = false;
     if (!alongSide &&
         (intersectPinched(rings, rule, convex, grid, ws, inside, direct, &overlapping) ||
-         (overlapping && intersectOverlapping(rings, rule, convex, grid, ws, inside, direct)))) {
+         (overlapping && rings.size() > 1 &&
+          intersectOverlapping(rings, rule, convex, grid, ws, inside, direct)))) {
       return direct;
     }
   }

@@ -104,12 +104,13 @@ class ChainSweep {
   ~ChainSweep() { status_.clear(); }
 
   bool run() {
+    s_.touched = false;
     if (!splitChains()) return false;
     const std::vector<ChainEvent>& events = s_.events;
     // Two turning vertices at one point (contours touching at a pixel corner, most often), found
     // before the sweep runs up to them.
     for (std::size_t e = 1; e < events.size(); ++e) {
-      if (events[e - 1].key == events[e].key) return false;
+      if (events[e - 1].key == events[e].key) return touch();
     }
     // The events at one x (one key's high half): the pairs starting there bottom to top, then
     // the pairs ending there. A chain that ends at x is still in the status while the pairs
@@ -248,6 +249,12 @@ class ChainSweep {
   // other's: the other's vertices there, or its edge across that x. Between two such x the gap
   // between the chains is linear, so they do not meet up to t. End partners meet at their
   // shared last vertex, at t: each reaches it from its own side. False at a contact.
+  // A contact where the chains meet without crossing (ChainScratch::touched): false.
+  bool touch() const {
+    s_.touched = true;
+    return false;
+  }
+
   bool walk(ChainNode& lo, ChainNode& hi, std::int64_t t) const {
     ChainCursor& e = lo.up;
     ChainCursor& f = hi.down;
@@ -261,11 +268,15 @@ class ChainSweep {
       const IPoint b = lo.end(e), d = hi.end(f);
       if (b.x < d.x) {
         if (b.x > t) return true;
-        if (orientInGrid(hi.start(f), d, b) >= 0) return false;  // b on or above hi's edge
+        if (const int o = orientInGrid(hi.start(f), d, b); o >= 0) {
+          return o == 0 && touch();  // b on or above hi's edge
+        }
         e = advance(lo, e);
       } else if (d.x < b.x) {
         if (d.x > t) return true;
-        if (orientInGrid(lo.start(e), b, d) <= 0) return false;  // d on or below lo's edge
+        if (const int o = orientInGrid(lo.start(e), b, d); o <= 0) {
+          return o == 0 && touch();  // d on or below lo's edge
+        }
         f = advance(hi, f);
       } else {  // both have vertices at this x: lo's highest must lie below hi's lowest
         if (b.x > t) return true;
@@ -273,8 +284,10 @@ class ChainSweep {
         e = extentAt(lo, e, b.x, loLow, loHigh);
         f = extentAt(hi, f, b.x, hiLow, hiHigh);
         if (loHigh < hiLow) continue;
-        return loHigh == hiLow && e.left < 0 && f.left < 0 &&
-               lo.endPartner == int(&hi - s_.chains.data());
+        // They share a point at this x (vertices, or a vertex on a vertical edge).
+        return (loHigh == hiLow && e.left < 0 && f.left < 0 &&
+                lo.endPartner == int(&hi - s_.chains.data())) ||
+               touch();
       }
     }
   }
@@ -289,7 +302,7 @@ class ChainSweep {
     const IPoint a = lo->end(lo->next(lo->at)), b = hi->end(hi->next(hi->at));
     std::int64_t low = p.y, high = p.y;
     if (a.x == p.x || b.x == p.x) {
-      if (a.x == p.x && b.x == p.x) return false;  // two vertical edges (turnsOnce() rejects)
+      if (a.x == p.x && b.x == p.x) return touch();  // two vertical edges (turnsOnce() rejects)
       const IPoint v = a.x == p.x ? a : b;
       const ChainNode* vertical = a.x == p.x ? lo : hi;
       if ((v.y < p.y) != (vertical == lo)) std::swap(lo, hi);
@@ -297,7 +310,7 @@ class ChainSweep {
       high = std::max(high, v.y);
     } else {
       const int turn = orientInGrid(p, a, b);
-      if (turn == 0) return false;  // overlapping first edges
+      if (turn == 0) return touch();  // overlapping first edges
       if (turn < 0) std::swap(lo, hi);
     }
     const IPoint bottom{p.x, low}, top{p.x, high};
@@ -313,8 +326,12 @@ class ChainSweep {
     ChainNode* below = above != nullptr ? above->below : top_;
     // The pair's neighbours must lie wholly below and above what it covers at p.x; the two
     // stop being neighbours at p.x.
-    if (above != nullptr && sideOf(*above, top) <= 0) return false;
-    if (below != nullptr && sideOf(*below, bottom) >= 0) return false;
+    if (above != nullptr) {
+      if (const int side = sideOf(*above, top); side <= 0) return side == 0 && touch();
+    }
+    if (below != nullptr) {
+      if (const int side = sideOf(*below, bottom); side >= 0) return side == 0 && touch();
+    }
     if (below != nullptr && above != nullptr && !walk(*below, *above, p.x)) return false;
     // The new neighbours lie apart at p.x: each is tested from its first vertex right of it.
     if (below != nullptr) skipThrough(*below, below->up, p.x);

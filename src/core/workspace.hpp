@@ -163,6 +163,10 @@ struct ChainScratch {
   std::vector<ChainEvent> events, sorted;  ///< sorted: the radix sort's second array
   std::vector<int> below, reached;
   std::vector<RingNesting> nesting;
+  /// Set when the last test stopped at a contact where two chains meet without crossing there
+  /// (a shared point, a vertex on an edge, edges along each other), not at a crossing: the
+  /// rings may touch only, which the pinch stage can take.
+  bool touched = false;
   template <class F>
   void forEach(F f) {
     f(chains);

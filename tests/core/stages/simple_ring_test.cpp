@@ -242,6 +242,39 @@ TEST(StageSimpleRing, AChainThatCrossesManyOthers) {
   }
 }
 
+// Where the test stops, it says whether the ring touches itself there (ChainScratch::touched:
+// a shared point, a vertex on an edge, edges along each other) or crosses itself; intersect()
+// tries the pinch stage on a single ring only in the first case.
+TEST(StageSimpleRing, ContactsAreToldFromCrossings) {
+  const auto touched = [](const Ring& r) {
+    detail::ChainScratch scratch;
+    EXPECT_FALSE(detail::ringIsSimple(r, scratch));
+    return scratch.touched;
+  };
+  EXPECT_TRUE(touched({{0, -2}, {4, 0}, {8, -2}, {8, 2}, {4, 0}, {0, 2}})) << "pinched lobes";
+  EXPECT_TRUE(touched({{0, 0}, {8, 0}, {8, 8}, {0, 8}, {0, 6}, {8, 4}, {0, 2}}))
+      << "turning vertex on an edge";
+  EXPECT_TRUE(touched({{0, 0}, {6, 0}, {6, 3}, {3, 1}, {2, 0}, {-2, 0}, {-2, -3}}))
+      << "collinear overlap";
+  // Two squares touching at a corner, one ring through (4, 4) twice, a vertex inside chains.
+  EXPECT_TRUE(touched({{0, 0}, {4, 0}, {4, 4}, {8, 4}, {8, 8}, {4, 8}, {4, 4}, {0, 4}}))
+      << "figure eight";
+  // The comb closed across its teeth: every tooth crosses the closing edge.
+  Ring comb = {{0, 5}, {401, 5}, {401, 10}};
+  for (int i = 200; i >= 1; --i) {
+    comb.insert(comb.end(), {{2 * i, 10}, {2 * i, 3}, {2 * i - 1, 3}, {2 * i - 1, 10}});
+  }
+  comb.push_back({0, 10});
+  EXPECT_FALSE(touched(comb)) << "comb";
+  // A crenellated contour with one tooth turned into a bow tie.
+  const testing::Crenellated shape{50};
+  Ring ring = toRing(shape.path());
+  std::size_t at = 100;  // a bottom tooth from here on: (a, 0), (a, -1), (b, -1), (b, 0)
+  while (ring[at].y != ring[at + 1].y + 1 || ring[at + 1].y != ring[at + 2].y) ++at;
+  std::swap(ring[at + 1], ring[at + 2]);
+  EXPECT_FALSE(touched(ring)) << "bow tie";
+}
+
 TEST(StageSimpleRing, ALongContourWithASingleCrossing) {
   const testing::Crenellated shape{6250};  // 100,004 vertices
   Ring ring = toRing(shape.path());
