@@ -25,6 +25,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <numeric>
+#include <utility>
 #include <vector>
 
 #include "pipeline.hpp"
@@ -36,21 +37,6 @@ namespace {
 using Line = OverlapScratch::Line;
 using Span = OverlapScratch::Span;
 using Split = OverlapScratch::Split;
-
-IPoint minus(IPoint a, IPoint b) { return {a.x - b.x, a.y - b.y}; }
-// For parallel directions (not zero): whether they point the same way (components compared by
-// sign: a dot product of two 2^31 vectors would not fit).
-bool alike(IPoint u, IPoint w) {
-  return u.x != 0 ? (u.x > 0) == (w.x > 0) : (u.y > 0) == (w.y > 0);
-}
-bool sameWay(IPoint u, IPoint w) { return crossSign(u, w) == 0 && alike(u, w); }
-
-// A table of 2^bits slots, at least twice `count`.
-int tableBits(std::size_t count) {
-  int bits = 4;
-  while ((std::size_t{1} << bits) < 2 * count) ++bits;
-  return bits;
-}
 
 Line lineOf(IPoint a, IPoint b) {
   IPoint d = minus(b, a);
@@ -213,9 +199,7 @@ bool linkVisits(const Rings& rings, OverlapScratch& s) {
   s.table.assign(std::size_t{1} << tb, kEmpty);
   for (std::size_t g = 0; g < count; ++g) {
     const IPoint p = s.points[g];
-    const std::uint64_t h = std::uint64_t(p.x >> k) * 0x9E3779B97F4A7C15ULL ^
-                            std::uint64_t(p.y >> k) * 0xC2B2AE3D27D4EB4FULL;
-    std::size_t at = std::size_t(h >> (64 - tb));
+    std::size_t at = std::size_t(pointHash(p, k) >> (64 - tb));
     while (s.table[at] != kEmpty && s.points[std::size_t(s.table[at])] != p) at = (at + 1) & mask;
     if (s.table[at] == kEmpty) {
       s.table[at] = g;
@@ -268,13 +252,17 @@ bool cancelOverlaps(const Rings& input, Rings& out, bool& touching, OverlapScrat
     int x = f;
     do {
       const IPoint xo = outEdge(x), xi = inEdge(x);
-      if (sameWay(xo, xi)) return false;  // straight back along itself
+      if (sameDirection(xo, xi)) return false;  // straight back along itself
       for (int y = s.same[std::size_t(x)]; y != f; y = s.same[std::size_t(y)]) {
         const IPoint yo = outEdge(y), yi = inEdge(y);
-        if (sameWay(xo, yo) || sameWay(xi, yi)) return false;  // along each other, one way
-        if (sameWay(xo, yi)) {
-          if (xo != yi) return false;  // cannot happen after the split
-          s.cancelled[std::size_t(x)] = s.cancelled[std::size_t(s.prev[std::size_t(y)])] = 1;
+        if (sameDirection(xo, yo) || sameDirection(xi, yi))
+          return false;  // along each other, one way
+        // x's out-edge back along y's in-edge, and y's out-edge back along x's in-edge.
+        for (const auto& [a, b] : {std::pair{x, y}, std::pair{y, x}}) {
+          const IPoint ao = a == x ? xo : yo, bi = a == x ? yi : xi;
+          if (!sameDirection(ao, bi)) continue;
+          if (ao != bi) return false;  // cannot happen after the split
+          s.cancelled[std::size_t(a)] = s.cancelled[std::size_t(s.prev[std::size_t(b)])] = 1;
           any = true;
         }
       }
@@ -333,7 +321,7 @@ bool cancelOverlaps(const Rings& input, Rings& out, bool& touching, OverlapScrat
       const IPoint din = minus(v, s.points[std::size_t(before)]);
       const IPoint dout = outEdge(e);
       if (crossSign(din, dout) == 0) {
-        if (!alike(din, dout)) return false;                             // back along itself
+        if (!sameDirection(din, dout)) return false;                     // back along itself
         if (s.same[std::size_t(e)] >= 0 && passes(e) > 1) return false;  // straight through a touch
         continue;
       }

@@ -51,10 +51,6 @@ struct Visit {
   int ring, index;
 };
 
-bool sameDirection(IPoint u, IPoint w) { return !ccwBefore(u, w) && !ccwBefore(w, u); }
-
-IPoint minus(IPoint a, IPoint b) { return {a.x - b.x, a.y - b.y}; }
-
 // The edges of a visit's ring at its vertex, as directions from it: to the vertex before and
 // to the one after.
 void edgesAt(const Rings& rings, const Visit& at, IPoint& in, IPoint& on) {
@@ -77,25 +73,24 @@ bool fourWays(IPoint a, IPoint b, IPoint c, IPoint d) {
 
 // The points visited twice, as consecutive pairs of visits, in ring order of their second
 // visit (an open-addressing hash table over the vertices, whose low `k` bits are zero). False
-// when a point is visited three times or more. A slot holds a point's first visit (ring in the
-// high half, index in the low one), kTwice once it has a second; all ones when empty.
+// when a point is visited three times or more or two edges at a point leave the same way (both
+// set `overlapping`: cancelOverlaps() may take the set), or two rings cross at one. A slot holds
+// a point's first visit (ring in the high half, index in the low one), kTwice once it has a
+// second; all ones when empty.
 bool visitsTwice(const Rings& rings, int k, std::vector<std::uint64_t>& table,
                  std::vector<Visit>& twice, bool& overlapping) {
   constexpr std::uint64_t kEmpty = ~std::uint64_t{0}, kTwice = std::uint64_t{1} << 62;
   twice.clear();
   std::size_t count = 0;
   for (const std::vector<IPoint>& ring : rings) count += ring.size();
-  int bits = 4;
-  while ((std::size_t{1} << bits) < 2 * count) ++bits;
+  const int bits = tableBits(count);
   table.assign(std::size_t{1} << bits, kEmpty);
   const std::size_t mask = (std::size_t{1} << bits) - 1;
   for (std::size_t r = 0; r < rings.size(); ++r) {
     const std::vector<IPoint>& ring = rings[r];
     for (std::size_t i = 0; i < ring.size(); ++i) {
       const IPoint p = ring[i];
-      const std::uint64_t h = std::uint64_t(p.x >> k) * 0x9E3779B97F4A7C15ULL ^
-                              std::uint64_t(p.y >> k) * 0xC2B2AE3D27D4EB4FULL;
-      std::size_t at = std::size_t(h >> (64 - bits));
+      std::size_t at = std::size_t(pointHash(p, k) >> (64 - bits));
       Visit first{};
       for (;; at = (at + 1) & mask) {
         if (table[at] == kEmpty) break;

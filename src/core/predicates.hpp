@@ -306,6 +306,30 @@ inline bool inSectorCcw(IPoint a, IPoint b, IPoint c) {
   return ccwBefore(a, b) ? ccwBefore(a, c) && ccwBefore(c, b) : ccwBefore(a, c) || ccwBefore(c, b);
 }
 
+/// Whether directions u and w (not zero) point the same way (parallel, components of one sign:
+/// a dot product of two 2^31 vectors would not fit).
+inline bool sameDirection(IPoint u, IPoint w) {
+  if (crossSign(u, w) != 0) return false;
+  return u.x != 0 ? (u.x > 0) == (w.x > 0) : (u.y > 0) == (w.y > 0);
+}
+
+/// The direction from b to a (grid points lie within 2^30 units of the origin: it fits).
+inline IPoint minus(IPoint a, IPoint b) { return {a.x - b.x, a.y - b.y}; }
+
+/// A hash of grid point p whose coordinates have k low zero bits (shifted out, so that points
+/// of a coarse lattice spread): an open-addressing table of 2^bits slots starts at
+/// pointHash(p, k) >> (64 - bits).
+inline std::uint64_t pointHash(IPoint p, int k) {
+  return std::uint64_t(p.x >> k) * 0x9E3779B97F4A7C15ULL ^
+         std::uint64_t(p.y >> k) * 0xC2B2AE3D27D4EB4FULL;
+}
+/// The bits of an open-addressing table with at least two slots per entry (16 at least).
+inline int tableBits(std::size_t count) {
+  int bits = 4;
+  while ((std::size_t{1} << bits) < 2 * count) ++bits;
+  return bits;
+}
+
 /// The point a + (num / den) * (b - a) on the line through grid points a, b; den > 0. Crossings
 /// on the grid come back with W == 1.
 inline void pointAlong(IPoint a, IPoint b, i128 num, i128 den, XPoint& out) {
