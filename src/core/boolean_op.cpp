@@ -110,7 +110,7 @@ PolygonSet intersectRings(const Rings& rings, FillRule rule, const SnappedOperan
   // One contour that does not touch itself (most contours): Weiler-Atherton, no sweep, when
   // its boundary crosses the convex ring's only transversally.
   PolygonSet direct;
-  ws.chains.touched = false;
+  ws.chains.touched = false;  // intersectSimpleConvex() may refuse before its simple-ring test
   if (rings.size() == 1 &&
       intersectSimpleConvex(rings[0], rule, convex.rings[0], convex.convex, grid, ws.chains,
                             ws.weiler, direct, known != nullptr ? known[0] : KnownSides{})) {

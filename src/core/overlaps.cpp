@@ -60,46 +60,56 @@ std::uint64_t hashOf(const Line& l) {
   return h ^ (h >> 31);
 }
 
-// Into s.splits: where edges on one line overlap, each edge split at the ends of the others
-// inside it. s.first holds the flat index of each ring's first vertex (and the total).
-void splitOverlaps(const Rings& rings, OverlapScratch& s) {
+// The rings flat: each vertex's point, successor and predecessor; s.first holds the flat index
+// of each ring's first vertex (and the total). False when every point is the origin.
+bool flatten(const Rings& rings, OverlapScratch& s) {
+  s.first.resize(rings.size() + 1);
+  s.first[0] = 0;
+  for (std::size_t r = 0; r < rings.size(); ++r) {
+    s.first[r + 1] = s.first[r] + int(rings[r].size());
+  }
   const std::size_t count = std::size_t(s.first.back());
+  s.points.resize(count);
+  s.next.resize(count);
+  s.prev.resize(count);
+  std::uint64_t bits = 0;
+  for (std::size_t r = 0; r < rings.size(); ++r) {
+    const int f = s.first[r], n = int(rings[r].size());
+    for (int i = 0; i < n; ++i) {
+      const IPoint p = rings[r][std::size_t(i)];
+      s.points[std::size_t(f + i)] = p;
+      s.next[std::size_t(f + i)] = i + 1 < n ? f + i + 1 : f;
+      s.prev[std::size_t(f + i)] = i > 0 ? f + i - 1 : f + n - 1;
+      bits |= std::uint64_t(p.x) | std::uint64_t(p.y);
+    }
+  }
+  s.lowZeroBits = bits == 0 ? -1 : __builtin_ctzll(bits);
+  return bits != 0;
+}
+
+// Into s.splits: where edges on one line overlap, each edge split at the ends of the others
+// inside it (the rings as flatten() left them).
+void splitOverlaps(OverlapScratch& s) {
+  const std::size_t count = s.points.size();
   const int bits = tableBits(count);
   const std::size_t mask = (std::size_t{1} << bits) - 1;
   s.lineHead.assign(std::size_t{1} << bits, -1);
   s.nextOnLine.resize(count);
   s.lines.resize(count);
   s.sharedLines.clear();
-  for (std::size_t r = 0; r < rings.size(); ++r) {
-    const std::vector<IPoint>& ring = rings[r];
-    const std::size_t n = ring.size();
-    for (std::size_t i = 0; i < n; ++i) {
-      const std::size_t e = std::size_t(s.first[r]) + i;
-      const Line line = lineOf(ring[i], ring[i + 1 < n ? i + 1 : 0]);
-      s.lines[e] = line;
-      std::size_t at = std::size_t(hashOf(line) >> (64 - bits));
-      while (s.lineHead[at] >= 0 && !(s.lines[std::size_t(s.lineHead[at])] == line)) {
-        at = (at + 1) & mask;
-      }
-      const int head = s.lineHead[at];
-      if (head >= 0 && s.nextOnLine[std::size_t(head)] < 0) s.sharedLines.push_back(int(at));
-      s.nextOnLine[e] = head;
-      s.lineHead[at] = int(e);
+  for (std::size_t e = 0; e < count; ++e) {
+    const Line line = lineOf(s.points[e], s.points[std::size_t(s.next[e])]);
+    s.lines[e] = line;
+    std::size_t at = std::size_t(hashOf(line) >> (64 - bits));
+    while (s.lineHead[at] >= 0 && !(s.lines[std::size_t(s.lineHead[at])] == line)) {
+      at = (at + 1) & mask;
     }
+    const int head = s.lineHead[at];
+    if (head >= 0 && s.nextOnLine[std::size_t(head)] < 0) s.sharedLines.push_back(int(at));
+    s.nextOnLine[e] = head;
+    s.lineHead[at] = int(e);
   }
   s.splits.clear();
-  if (s.sharedLines.empty()) return;
-  // Each edge's ends, by flat index.
-  s.points.resize(count);
-  for (std::size_t r = 0; r < rings.size(); ++r) {
-    std::copy(rings[r].begin(), rings[r].end(), s.points.begin() + s.first[r]);
-  }
-  const auto endOf = [&](std::size_t e) {
-    const std::size_t r =
-        std::size_t(std::upper_bound(s.first.begin(), s.first.end(), int(e)) - s.first.begin()) - 1;
-    return e + 1 < std::size_t(s.first[r + 1]) ? s.points[e + 1]
-                                               : s.points[std::size_t(s.first[r])];
-  };
   for (const int slot : s.sharedLines) {
     const int head = s.lineHead[std::size_t(slot)];
     const IPoint u = s.lines[std::size_t(head)].u;
@@ -107,7 +117,8 @@ void splitOverlaps(const Rings& rings, OverlapScratch& s) {
     const auto along = [byX](IPoint p) { return byX ? p.x : p.y; };
     s.spans.clear();
     for (int e = head; e >= 0; e = s.nextOnLine[std::size_t(e)]) {
-      const std::int64_t a = along(s.points[std::size_t(e)]), b = along(endOf(std::size_t(e)));
+      const std::int64_t a = along(s.points[std::size_t(e)]);
+      const std::int64_t b = along(s.points[std::size_t(s.next[std::size_t(e)])]);
       s.spans.push_back({std::min(a, b), std::max(a, b), e});
     }
     // Most shared lines hold two or three spans: an insertion sort by their low ends.
@@ -148,7 +159,7 @@ void splitOverlaps(const Rings& rings, OverlapScratch& s) {
   }
 }
 
-// s.split: the rings with s.splits inserted (each edge's in order along it); s.first updated.
+// s.split: the rings with s.splits inserted (each edge's in order along it).
 void insertSplits(const Rings& rings, OverlapScratch& s) {
   std::sort(s.splits.begin(), s.splits.end(), [](const Split& a, const Split& b) {
     return a.edge != b.edge ? a.edge < b.edge : a.along < b.along;
@@ -165,34 +176,18 @@ void insertSplits(const Rings& rings, OverlapScratch& s) {
       for (; k < s.splits.size() && s.splits[k].edge == edge; ++k) ring.push_back(s.splits[k].at);
       ++edge;
     }
-    s.first[r + 1] = s.first[r] + int(ring.size());
   }
 }
 
-// The points of the rings, flat, with their successors and predecessors, and the visits that
-// share a point linked (s.same, s.rep, s.sharedPoints). False when every point is the origin.
-bool linkVisits(const Rings& rings, OverlapScratch& s) {
-  const std::size_t count = std::size_t(s.first.back());
-  s.points.resize(count);
-  s.next.resize(count);
-  s.prev.resize(count);
+// The visits that share a point linked (s.same, s.rep, s.sharedPoints), by a hash of the points
+// flatten() left.
+void linkVisits(OverlapScratch& s) {
+  const std::size_t count = s.points.size();
   s.rep.resize(count);
   s.same.assign(count, -1);
   s.sharedPoints.clear();
-  std::uint64_t bits = 0;
-  for (std::size_t r = 0; r < rings.size(); ++r) {
-    const int f = s.first[r], n = int(rings[r].size());
-    for (int i = 0; i < n; ++i) {
-      const IPoint p = rings[r][std::size_t(i)];
-      s.points[std::size_t(f + i)] = p;
-      s.next[std::size_t(f + i)] = i + 1 < n ? f + i + 1 : f;
-      s.prev[std::size_t(f + i)] = i > 0 ? f + i - 1 : f + n - 1;
-      bits |= std::uint64_t(p.x) | std::uint64_t(p.y);
-    }
-  }
-  if (bits == 0) return false;
   // Grid points share their low zero bits: shifted out, the hash spreads them.
-  const int k = __builtin_ctzll(bits);
+  const int k = s.lowZeroBits;
   const int tb = tableBits(count);
   const std::size_t mask = (std::size_t{1} << tb) - 1;
   constexpr std::uint64_t kEmpty = ~std::uint64_t{0};
@@ -217,7 +212,6 @@ bool linkVisits(const Rings& rings, OverlapScratch& s) {
       s.same[f] = int(g);
     }
   }
-  return true;
 }
 
 }  // namespace
@@ -225,18 +219,13 @@ bool linkVisits(const Rings& rings, OverlapScratch& s) {
 bool cancelOverlaps(const Rings& input, Rings& out, bool& touching, OverlapScratch& s) {
   out.clear();
   touching = false;
-  s.first.resize(input.size() + 1);
-  s.first[0] = 0;
-  for (std::size_t r = 0; r < input.size(); ++r) {
-    s.first[r + 1] = s.first[r] + int(input[r].size());
-  }
-  splitOverlaps(input, s);
-  const Rings* ringsIn = &input;
+  if (!flatten(input, s)) return false;
+  splitOverlaps(s);
   if (!s.splits.empty()) {
     insertSplits(input, s);
-    ringsIn = &s.split;
+    flatten(s.split, s);
   }
-  if (!linkVisits(*ringsIn, s)) return false;
+  linkVisits(s);
   const std::size_t count = s.points.size();
   const auto outEdge = [&](int g) {
     return minus(s.points[std::size_t(s.next[std::size_t(g)])], s.points[std::size_t(g)]);

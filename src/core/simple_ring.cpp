@@ -104,7 +104,6 @@ class ChainSweep {
   ~ChainSweep() { status_.clear(); }
 
   bool run() {
-    s_.touched = false;
     if (!splitChains()) return false;
     const std::vector<ChainEvent>& events = s_.events;
     // Two turning vertices at one point (contours touching at a pixel corner, most often), found
@@ -242,6 +241,12 @@ class ChainSweep {
     return true;
   }
 
+  // A contact where the chains meet without crossing (ChainScratch::touched): false.
+  bool touch() const {
+    s_.touched = true;
+    return false;
+  }
+
   // Chains lo and hi (hi just above lo) have been neighbours since an x where they lay apart;
   // their cursors (lo's `up`, hi's `down`) are at their first vertices right of it. Their
   // vertices from there up to x = t are taken in x order. At each x where one of them has
@@ -249,12 +254,6 @@ class ChainSweep {
   // other's: the other's vertices there, or its edge across that x. Between two such x the gap
   // between the chains is linear, so they do not meet up to t. End partners meet at their
   // shared last vertex, at t: each reaches it from its own side. False at a contact.
-  // A contact where the chains meet without crossing (ChainScratch::touched): false.
-  bool touch() const {
-    s_.touched = true;
-    return false;
-  }
-
   bool walk(ChainNode& lo, ChainNode& hi, std::int64_t t) const {
     ChainCursor& e = lo.up;
     ChainCursor& f = hi.down;
@@ -458,10 +457,12 @@ Path simpleRingPath(const std::vector<IPoint>& ring, LowestVertex lowest, bool h
 }
 
 bool ringIsSimple(const std::vector<IPoint>& ring, ChainScratch& scratch, bool turnsChecked) {
+  scratch.touched = false;
   return (turnsChecked || turnsOnce(ring)) && ChainSweep(&ring, 1, scratch, nullptr).run();
 }
 
 bool ringsAreSimple(const Rings& rings, ChainScratch& scratch) {
+  scratch.touched = false;
   for (const std::vector<IPoint>& ring : rings) {
     if (!turnsOnce(ring)) return false;
   }

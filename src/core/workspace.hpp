@@ -198,18 +198,20 @@ struct OverlapScratch {
     IPoint at;
   };
   // The line pass: a table of lines (the last edge on each, chained by nextOnLine).
-  std::vector<int> lineHead, nextOnLine, sharedLines, first;
+  std::vector<int> lineHead, nextOnLine, sharedLines;
   std::vector<Line> lines;
   std::vector<Span> spans;
   std::vector<std::int64_t> stops;
   std::vector<Split> splits;
   Rings split;  ///< the rings with the splits inserted
-  // The vertices, flat: successor, predecessor, the next visit of the same point (circular,
-  // -1: visited once) and the point's first visit; the table of points.
+  // The vertices, flat (each ring's first at `first`): successor, predecessor, the next visit of
+  // the same point (circular, -1: visited once) and the point's first visit; the table of points.
+  std::vector<int> first;
   std::vector<IPoint> points;
   std::vector<int> next, prev, same, rep, sharedPoints, succ, stack, onStack;
   std::vector<std::uint64_t> table;
   std::vector<char> cancelled, claimed, walked;
+  int lowZeroBits = 0;  ///< the low zero bits every coordinate has (the hash shifts them out)
   template <class F>
   void forEach(F f) {
     f(lineHead);
