@@ -42,9 +42,10 @@ PolygonSet resolve(const BooleanSpec& spec, const Grid& grid, Workspace& ws,
 bool intersectPinched(const Rings& rings, FillRule rule, const SnappedOperand& convex,
                       const Grid& grid, Workspace& ws, bool inside, PolygonSet& out,
                       bool* overlapping = nullptr) {
-  PinchedRings pinched;
+  PinchedRings& pinched = ws.pinched;
+  ws.generalPathUsed = true;  // the stage's arrays are recycled with the general path's
   if (!separatePinches(rings, pinched, overlapping) ||
-      !ringsAreSimple(pinched.separated, ws.chains)) {
+      !ringsAreSimple(pinched.separated.rings, ws.chains)) {
     return false;
   }
   if (inside) return pinchedRingsRegion(pinched, rule, ws.chains, grid, out);
@@ -52,14 +53,15 @@ bool intersectPinched(const Rings& rings, FillRule rule, const SnappedOperand& c
   const std::vector<IPoint>& c = convex.rings[0];
   if (c.size() > std::size_t(kMaxSides)) return false;
   const SideLines sides(c, convex.convex);
-  std::vector<PinchedRings::Pinch> touching;
+  std::vector<PinchedRings::Pinch>& touching = pinched.touching;
+  touching.clear();
   for (const PinchedRings::Pinch& pinch : pinched.pinches) {
     const SideLines::Masks m = sides.classify(pinch.at);
     if ((m.left | m.zeros) != sides.all()) continue;  // outside C
     if (m.left != sides.all()) return false;          // on C's boundary
     touching.push_back(pinch);
   }
-  return intersectSimpleRingsConvex(pinched.rings, rule, c, convex.convex, grid, ws.chains,
+  return intersectSimpleRingsConvex(*pinched.rings, rule, c, convex.convex, grid, ws.chains,
                                     ws.weiler, out, nullptr, &touching);
 }
 
@@ -85,10 +87,10 @@ bool edgeAlongSide(const Rings& rings, const KnownSides* known, std::size_t m) {
 // rings with those edges cancelled (cancelOverlaps()): into `out`, or false.
 bool intersectOverlapping(const Rings& rings, FillRule rule, const SnappedOperand& convex,
                           const Grid& grid, Workspace& ws, bool inside, PolygonSet& out) {
-  Rings reduced;
   bool touching = false;
   ws.generalPathUsed = true;  // the stage's arrays are recycled with the general path's
-  if (!cancelOverlaps(rings, reduced, touching, ws.overlaps)) return false;
+  const Rings& reduced = ws.overlaps.reduced.rings;
+  if (!cancelOverlaps(rings, ws.overlaps.reduced, touching, ws.overlaps)) return false;
   if (touching) return intersectPinched(reduced, rule, convex, grid, ws, inside, out);
   if (!ringsAreSimple(reduced, ws.chains)) return false;
   if (inside) {
@@ -159,6 +161,7 @@ PolygonSet intersectRings(const Rings& rings, FillRule rule, const SnappedOperan
   const auto release = [](auto& v) { releaseEachAbove(kKeptOutputBytes, v); };
   ws.chains.forEach(release);
   ws.weiler.forEach(release);
+  ws.pinched.forEach(release);
   ws.overlaps.forEach(release);
   BooleanSpec spec;
   spec.subjectRule = rule;

@@ -164,12 +164,11 @@ void insertSplits(const Rings& rings, OverlapScratch& s) {
   std::sort(s.splits.begin(), s.splits.end(), [](const Split& a, const Split& b) {
     return a.edge != b.edge ? a.edge < b.edge : a.along < b.along;
   });
-  s.split.resize(rings.size());
+  s.split.clear();
   std::size_t k = 0;
   int edge = 0;  // flat index in `rings`
   for (std::size_t r = 0; r < rings.size(); ++r) {
-    std::vector<IPoint>& ring = s.split[r];
-    ring.clear();
+    std::vector<IPoint>& ring = s.split.add();
     ring.reserve(rings[r].size() + 4);
     for (const IPoint p : rings[r]) {
       ring.push_back(p);
@@ -216,14 +215,14 @@ void linkVisits(OverlapScratch& s) {
 
 }  // namespace
 
-bool cancelOverlaps(const Rings& input, Rings& out, bool& touching, OverlapScratch& s) {
+bool cancelOverlaps(const Rings& input, KeptRings& out, bool& touching, OverlapScratch& s) {
   out.clear();
   touching = false;
   if (!flatten(input, s)) return false;
   splitOverlaps(s);
   if (!s.splits.empty()) {
     insertSplits(input, s);
-    flatten(s.split, s);
+    flatten(s.split.rings, s);
   }
   linkVisits(s);
   const std::size_t count = s.points.size();
@@ -299,7 +298,7 @@ bool cancelOverlaps(const Rings& input, Rings& out, bool& touching, OverlapScrat
   s.stack.clear();
   s.onStack.assign(count, -1);
   const auto emit = [&](std::size_t from) {
-    std::vector<IPoint>& ring = out.emplace_back();
+    std::vector<IPoint>& ring = out.add();
     const std::size_t n = s.stack.size() - from;
     ring.reserve(n);
     for (std::size_t i = 0; i < n; ++i) {
@@ -332,7 +331,7 @@ bool cancelOverlaps(const Rings& input, Rings& out, bool& touching, OverlapScrat
     }
     if (!emit(0)) return false;
   }
-  return !out.empty();
+  return !out.rings.empty();
 }
 
 }  // namespace roiclip::detail

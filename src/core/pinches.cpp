@@ -47,9 +47,7 @@ namespace {
 // another edge). Pixel coordinates on a fitted grid have about 20.
 constexpr int kMinLowZeroBits = 12;
 
-struct Visit {
-  int ring, index;
-};
+using Visit = PinchedRings::Visit;
 
 // The edges of a visit's ring at its vertex, as directions from it: to the vertex before and
 // to the one after.
@@ -125,16 +123,19 @@ bool visitsTwice(const Rings& rings, int k, std::vector<std::uint64_t>& table,
   return true;
 }
 
-// Splits ring `ring` at the vertices it visits twice (`partner[i]`: the other visit of vertex
-// i, or -1), the stack method: a vertex seen again while its first visit is on the stack pops
-// the loop between them as a ring. False when a loop has fewer than three vertices.
-bool splitAtSelfPinches(const std::vector<IPoint>& ring, const std::vector<int>& partner,
-                        Rings& out) {
+// Splits ring `ring` at the vertices it visits twice (p.partner[i]: the other visit of vertex
+// i, or -1) into p.split, the stack method: a vertex seen again while its first visit is on the
+// stack pops the loop between them as a ring. False when a loop has fewer than three vertices.
+bool splitAtSelfPinches(const std::vector<IPoint>& ring, PinchedRings& p) {
   const int n = int(ring.size());
-  std::vector<int> stack, position(std::size_t(n), -1);
+  std::vector<int>& stack = p.stack;
+  std::vector<int>& position = p.position;
+  stack.clear();
+  position.assign(std::size_t(n), -1);
   const auto emit = [&](std::size_t from) {
     if (stack.size() - from < 3) return false;
-    std::vector<IPoint>& loop = out.emplace_back();
+    std::vector<IPoint>& loop = p.split.add();
+    loop.reserve(stack.size() - from);
     for (std::size_t s = from; s < stack.size(); ++s) {
       loop.push_back(ring[std::size_t(stack[s])]);
       position[std::size_t(stack[s])] = -1;
@@ -143,7 +144,7 @@ bool splitAtSelfPinches(const std::vector<IPoint>& ring, const std::vector<int>&
     return true;
   };
   for (int t = 0; t < n; ++t) {
-    const int i = partner[std::size_t(t)];
+    const int i = p.partner[std::size_t(t)];
     if (i >= 0 && i < t && position[std::size_t(i)] >= 0) {
       if (!emit(std::size_t(position[std::size_t(i)]))) return false;
     }
@@ -163,7 +164,8 @@ IPoint primitiveStep(IPoint d) {
 
 bool separatePinches(const Rings& rings, PinchedRings& out, bool* overlapping) {
   bool overlap = false;
-  out.rings.clear();
+  out.rings = &rings;
+  out.split.clear();
   out.separated.clear();
   out.pinches.clear();
   std::uint64_t bits = 0;
@@ -182,16 +184,15 @@ bool separatePinches(const Rings& rings, PinchedRings& out, bool* overlapping) {
   if (bits == 0) return false;
   const int k = __builtin_ctzll(bits);
   if (k < kMinLowZeroBits) return false;
-  std::vector<std::uint64_t> table;
-  std::vector<Visit> twice;
-  if (!visitsTwice(rings, k, table, twice, overlap) || twice.empty()) {
+  std::vector<Visit>& twice = out.twice;
+  if (!visitsTwice(rings, k, out.table, twice, overlap) || twice.empty()) {
     if (overlapping != nullptr) *overlapping = overlap;
     return false;
   }
 
   // Each ring visiting a vertex twice, split there.
-  std::vector<int> partner;
-  std::vector<char> selfPinched(rings.size(), 0);
+  std::vector<char>& selfPinched = out.selfPinched;
+  selfPinched.assign(rings.size(), 0);
   bool anySelf = false;
   for (std::size_t t = 0; t < twice.size(); t += 2) {
     if (twice[t].ring == twice[t + 1].ring) {
@@ -199,27 +200,33 @@ bool separatePinches(const Rings& rings, PinchedRings& out, bool* overlapping) {
       anySelf = true;
     }
   }
-  for (std::size_t r = 0; r < rings.size(); ++r) {
-    if (selfPinched[r] == 0) {
-      out.rings.push_back(rings[r]);
-      continue;
+  if (anySelf) {
+    for (std::size_t r = 0; r < rings.size(); ++r) {
+      if (selfPinched[r] == 0) {
+        out.split.add().assign(rings[r].begin(), rings[r].end());
+        continue;
+      }
+      out.partner.assign(rings[r].size(), -1);
+      for (std::size_t t = 0; t < twice.size(); t += 2) {
+        if (twice[t].ring != int(r) || twice[t + 1].ring != int(r)) continue;
+        out.partner[std::size_t(twice[t].index)] = twice[t + 1].index;
+        out.partner[std::size_t(twice[t + 1].index)] = twice[t].index;
+      }
+      if (!splitAtSelfPinches(rings[r], out)) return false;
     }
-    partner.assign(rings[r].size(), -1);
-    for (std::size_t t = 0; t < twice.size(); t += 2) {
-      if (twice[t].ring != int(r) || twice[t + 1].ring != int(r)) continue;
-      partner[std::size_t(twice[t].index)] = twice[t + 1].index;
-      partner[std::size_t(twice[t + 1].index)] = twice[t].index;
-    }
-    if (!splitAtSelfPinches(rings[r], partner, out.rings)) return false;
+    out.rings = &out.split.rings;
+    if (!visitsTwice(*out.rings, k, out.table, twice, overlap)) return false;
   }
-  if (anySelf && !visitsTwice(out.rings, k, table, twice, overlap)) return false;
+  const Rings& split = *out.rings;
 
   // At each pinch, the pass whose corner is cut.
-  std::vector<std::size_t> start(out.rings.size() + 1, 0);
-  for (std::size_t r = 0; r < out.rings.size(); ++r) start[r + 1] = start[r] + out.rings[r].size();
-  std::vector<char> cut(start.back(), 0);
+  std::vector<std::size_t>& start = out.start;
+  start.assign(split.size() + 1, 0);
+  for (std::size_t r = 0; r < split.size(); ++r) start[r + 1] = start[r] + split[r].size();
+  std::vector<char>& cut = out.cut;
+  cut.assign(start.back(), 0);
   const auto pointOf = [&](const Visit& at) {
-    return out.rings[std::size_t(at.ring)][std::size_t(at.index)];
+    return split[std::size_t(at.ring)][std::size_t(at.index)];
   };
   // A step from v shorter than 2^(k-1), and than 2^2k / |longest edge| (with a margin for the
   // rounding of the doubles).
@@ -234,8 +241,8 @@ bool separatePinches(const Rings& rings, PinchedRings& out, bool* overlapping) {
     const Visit& second = twice[t + 1];
     if (first.ring == second.ring) return false;
     IPoint a, b, c, d;
-    edgesAt(out.rings, first, a, b);
-    edgesAt(out.rings, second, c, d);
+    edgesAt(split, first, a, b);
+    edgesAt(split, second, c, d);
     // Touching, not crossing: c and d in one sector between a and b.
     const bool cInAB = inSectorCcw(a, b, c);
     if (cInAB != inSectorCcw(a, b, d)) return false;
@@ -253,12 +260,11 @@ bool separatePinches(const Rings& rings, PinchedRings& out, bool* overlapping) {
   }
 
   // The separated rings: each cut vertex replaced by the grid points a step along its edges.
-  out.separated.resize(out.rings.size());
-  for (std::size_t r = 0; r < out.rings.size(); ++r) {
-    const std::vector<IPoint>& ring = out.rings[r];
-    std::vector<IPoint>& separated = out.separated[r];
-    separated.clear();
+  for (std::size_t r = 0; r < split.size(); ++r) {
+    const std::vector<IPoint>& ring = split[r];
+    std::vector<IPoint>& separated = out.separated.add();
     const std::size_t n = ring.size();
+    separated.reserve(n + out.pinches.size());  // one more point per cut vertex
     for (std::size_t i = 0; i < n; ++i) {
       const IPoint v = ring[i];
       if (cut[start[r] + i] == 0) {
@@ -300,9 +306,9 @@ bool pinchesKeepRings(const std::vector<PinchedRings::Pinch>& pinches,
 
 bool pinchedRingsRegion(const PinchedRings& pinched, FillRule rule, ChainScratch& scratch,
                         const Grid& grid, PolygonSet& out) {
-  nestSimpleRings(pinched.rings, rule, scratch);
+  nestSimpleRings(*pinched.rings, rule, scratch);
   if (!pinchesKeepRings(pinched.pinches, scratch.nesting)) return false;
-  out = nestedRingsRegion(pinched.rings, scratch, grid);
+  out = nestedRingsRegion(*pinched.rings, scratch, grid);
   return true;
 }
 

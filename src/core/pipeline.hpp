@@ -63,6 +63,46 @@ void appendInputEdges(const Paths& paths, int operand, const Grid& grid,
 /// Closed rings of grid points, as snapRings() makes them.
 using Rings = std::vector<std::vector<IPoint>>;
 
+/// Rings a stage writes again for each group of a call (the pinch and overlap stages' output):
+/// a ring dropped keeps its array in `spare`, and add() takes one from there, so the groups of a
+/// call after the first allocate none (W5 scene_05 made 270 growing allocations for them).
+class KeptRings {
+ public:
+  Rings rings;
+  /// An empty ring at the end of `rings`.
+  std::vector<IPoint>& add() {
+    if (spare_.empty()) return rings.emplace_back();
+    rings.push_back(std::move(spare_.back()));
+    spare_.pop_back();
+    rings.back().clear();
+    return rings.back();
+  }
+  /// Drops every ring, keeping their arrays.
+  void clear() {
+    for (; !rings.empty(); rings.pop_back()) spare_.push_back(std::move(rings.back()));
+  }
+  /// Every ring emptied, `n` of them.
+  void reset(std::size_t n) {
+    clear();
+    while (rings.size() < n) add();
+  }
+  /// The bytes held by the rings and the spare arrays.
+  [[nodiscard]] std::size_t bytes() const {
+    std::size_t sum = (rings.capacity() + spare_.capacity()) * sizeof(std::vector<IPoint>);
+    for (const Rings* set : {&rings, &spare_}) {
+      for (const std::vector<IPoint>& ring : *set) sum += ring.capacity() * sizeof(IPoint);
+    }
+    return sum;
+  }
+  void swap(KeptRings& o) noexcept {
+    rings.swap(o.rings);
+    spare_.swap(o.spare_);
+  }
+
+ private:
+  Rings spare_;
+};
+
 /// The edges of already snapped rings (input.cpp; appendInputEdges() is snapRings() + this).
 void appendRingEdges(const Rings& rings, int operand, std::vector<InputEdge>& out);
 
@@ -440,21 +480,53 @@ Path simpleRingPath(const std::vector<IPoint>& ring, LowestVertex lowest, bool h
                     const OutputFrame& frame);
 
 /// Rings touching themselves or each other only at vertices, as separatePinches() prepares them
-/// (pinches.cpp).
+/// (pinches.cpp), and the stage's working arrays (the workspace keeps one between groups and
+/// calls).
 struct PinchedRings {
-  /// The rings split where one visits a vertex twice: each visits each vertex once; every
-  /// point that two visit is a pinch.
-  Rings rings;
-  /// The same rings (same indices) with one of the two corners at each pinch cut off by a grid
-  /// step along its edges: simple and pairwise apart (ringsAreSimple()) only if `rings` meet
-  /// nowhere but at the pinches, touching there without crossing. Their nesting is that of
-  /// `rings`.
-  Rings separated;
   struct Pinch {
     IPoint at;
     int ring, other;  ///< the two rings of `rings` through it
   };
+  /// A visit of a point: a ring and the index of the point in it.
+  struct Visit {
+    int ring, index;
+  };
+  /// The rings split where one visits a vertex twice: each visits each vertex once; every
+  /// point that two visit is a pinch. The rings given (which must outlive this use), or
+  /// `split` when one was split.
+  const Rings* rings = nullptr;
+  KeptRings split;
+  /// The same rings (same indices) with one of the two corners at each pinch cut off by a grid
+  /// step along its edges: simple and pairwise apart (ringsAreSimple()) only if `rings` meet
+  /// nowhere but at the pinches, touching there without crossing. Their nesting is that of
+  /// `rings`.
+  KeptRings separated;
   std::vector<Pinch> pinches;
+  /// The pinches strictly inside the convex ring (boolean_op.cpp's intersectPinched()).
+  std::vector<Pinch> touching;
+  // The working arrays: a hash table of the points, the points visited twice (pairs of
+  // visits), a ring's vertices visited twice (the other visit's index, or -1), the stack of
+  // the split, each ring's first vertex (flat), and the vertices whose corner is cut.
+  std::vector<std::uint64_t> table;
+  std::vector<Visit> twice;
+  std::vector<int> partner, stack, position;
+  std::vector<std::size_t> start;
+  std::vector<char> selfPinched, cut;
+  template <class F>
+  void forEach(F f) {
+    f(split);
+    f(separated);
+    f(pinches);
+    f(touching);
+    f(table);
+    f(twice);
+    f(partner);
+    f(stack);
+    f(position);
+    f(start);
+    f(selfPinched);
+    f(cut);
+  }
 };
 /// intersectSimpleConvex() for a set of rings that ringsAreSimple() accepted (just before, on
 /// `chains`): Weiler-Atherton over every ring that bounds the region, holes walked clockwise;
@@ -486,7 +558,7 @@ bool separatePinches(const Rings& rings, PinchedRings& out, bool* overlapping = 
 /// (the pinch stage's case). False when nothing cancels, or when two edges run the same way
 /// along each other, a point has several cancelled ends to pair, or a ring goes straight on
 /// through another's point or back along itself.
-bool cancelOverlaps(const Rings& rings, Rings& out, bool& touching, OverlapScratch& scratch);
+bool cancelOverlaps(const Rings& rings, KeptRings& out, bool& touching, OverlapScratch& scratch);
 /// Whether stages 1 to 4 return the pinched rings as they are, with `nesting` as
 /// nestSimpleRings() leaves it for them. Stages 1 to 4 pair the edges at a pinch around each
 /// filled sector, then split a ring that visits a vertex twice. Rings of two faces of the region

@@ -19,6 +19,7 @@ void Workspace::recycleAll() {
   weiler.forEach([](auto& v) { recycle(v); });
   if (!generalPathUsed) return;
   generalPathUsed = false;
+  pinched.forEach([](auto& v) { recycle(v); });
   overlaps.forEach([](auto& v) { recycle(v); });
   recycle(pieces);
   recycle(exactRights);
@@ -42,13 +43,6 @@ void Workspace::recycleAll() {
   trace.forEach([](auto& v) { recycle(v); });
   nesting.forEach([](auto& v) { recycle(v); });
   forEachLent([](auto& v) { recycle(v); });
-}
-
-void keepIfSmall(Rings& used, Rings& kept) {
-  std::size_t bytes = used.capacity() * sizeof(used[0]);
-  for (const std::vector<IPoint>& ring : used) bytes += ring.capacity() * sizeof(IPoint);
-  if (bytes <= kKeptOutputBytes) kept.swap(used);
-  Rings().swap(used);
 }
 
 template <class F>
@@ -89,6 +83,7 @@ void Workspace::release() {
   std::vector<InputEdge>().swap(edges);
   chains.forEach([](auto& v) { std::remove_reference_t<decltype(v)>().swap(v); });
   weiler.forEach([](auto& v) { std::remove_reference_t<decltype(v)>().swap(v); });
+  pinched.forEach([](auto& v) { std::remove_reference_t<decltype(v)>().swap(v); });
   overlaps.forEach([](auto& v) { std::remove_reference_t<decltype(v)>().swap(v); });
   trace.forEach([](auto& v) { std::remove_reference_t<decltype(v)>().swap(v); });
   nesting.forEach([](auto& v) { std::remove_reference_t<decltype(v)>().swap(v); });

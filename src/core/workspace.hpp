@@ -26,9 +26,20 @@ namespace roiclip::detail {
 /// calls. recycle() empties an array after use and keeps its capacity up to kKeptScratchBytes;
 /// a larger one is freed.
 constexpr std::size_t kKeptScratchBytes = std::size_t(64) << 20;
+/// The bytes an array holds; for rings, with their own arrays.
+template <class V>
+std::size_t bytesOf(const V& v) {
+  return v.capacity() * sizeof(typename V::value_type);
+}
+inline std::size_t bytesOf(const Rings& rings) {
+  std::size_t sum = rings.capacity() * sizeof(rings[0]);
+  for (const std::vector<IPoint>& ring : rings) sum += ring.capacity() * sizeof(IPoint);
+  return sum;
+}
+inline std::size_t bytesOf(const KeptRings& rings) { return rings.bytes(); }
 template <class V>
 void recycle(V& v) {
-  if (v.capacity() * sizeof(typename V::value_type) > kKeptScratchBytes) {
+  if (bytesOf(v) > kKeptScratchBytes) {
     V().swap(v);
   } else {
     v.clear();
@@ -47,7 +58,7 @@ constexpr std::size_t kKeptStageBytes = std::size_t(4) << 10;
 template <class... V>
 void releaseEachAbove(std::size_t bytes, V&... arrays) {
   const auto one = [bytes](auto& v) {
-    if (v.capacity() * sizeof(v[0]) > bytes) std::remove_reference_t<decltype(v)>().swap(v);
+    if (bytesOf(v) > bytes) std::remove_reference_t<decltype(v)>().swap(v);
   };
   (..., one(arrays));
 }
@@ -57,13 +68,12 @@ void releaseEachAbove(std::size_t bytes, V&... arrays) {
 /// 10,000 contours of ~20 vertices) then allocates none of them. Larger ones are freed, as
 /// nesting, where a large call peaks, should not hold them.
 constexpr std::size_t kKeptOutputBytes = std::size_t(1) << 20;
+/// (For a set of rings, a snapped operand's, by the storage of all of them together.)
 template <class V>
 void keepIfSmall(V& used, V& kept) {
-  if (used.capacity() * sizeof(typename V::value_type) <= kKeptOutputBytes) kept.swap(used);
+  if (bytesOf(used) <= kKeptOutputBytes) kept.swap(used);
   V().swap(used);
 }
-/// The same for a set of rings (a snapped operand's), by the storage of all of them together.
-void keepIfSmall(Rings& used, Rings& kept);
 
 /// The sweep's status (the active pieces bottom to top) is an intrusive red-black tree over a
 /// pool of nodes: no allocation per insertion, and a node keeps its place in the tree when the
@@ -203,7 +213,8 @@ struct OverlapScratch {
   std::vector<Span> spans;
   std::vector<std::int64_t> stops;
   std::vector<Split> splits;
-  Rings split;  ///< the rings with the splits inserted
+  KeptRings split;    ///< the rings with the splits inserted
+  KeptRings reduced;  ///< cancelOverlaps()'s output, when intersectOverlapping() calls it
   // The vertices, flat (each ring's first at `first`): successor, predecessor, the next visit of
   // the same point (circular, -1: visited once) and the point's first visit; the table of points.
   std::vector<int> first;
@@ -223,6 +234,7 @@ struct OverlapScratch {
     f(stops);
     f(splits);
     f(split);
+    f(reduced);
     f(points);
     f(next);
     f(prev);
@@ -445,7 +457,8 @@ struct Workspace {
   ChainScratch chains;
   // The simple-ring AND convex-ring case (simple_convex.cpp).
   WeilerScratch weiler;
-  // Overlapping edges cancelled (overlaps.cpp).
+  // Pinches separated (pinches.cpp) and overlapping edges cancelled (overlaps.cpp).
+  PinchedRings pinched;
   OverlapScratch overlaps;
   // Tracing (trace_contours.cpp).
   TraceScratch trace;
@@ -453,8 +466,8 @@ struct Workspace {
   NestingScratch nesting;
 
   /// Set by the stages of the general path (preclipConvex(), resolveGeneral(), splitEdges())
-  /// and by cancelOverlaps(), the only ones that take arrays beyond `chains`, `weiler` and
-  /// `operandRings`: recycleAll()
+  /// and by the pinch and overlap stages, the only ones that take arrays beyond `chains`,
+  /// `weiler` and `operandRings`: recycleAll()
   /// recycles the others only after a call that set it. A call on a sweep-free path (W4's small
   /// contours) then walks 21 arrays, not 59.
   bool generalPathUsed = false;

@@ -29,12 +29,13 @@ const FillRule kRules[] = {FillRule::EvenOdd, FillRule::NonZero, FillRule::Posit
 // (the sweep-free paths can take them).
 bool cancels(const Paths& paths, const Path& roi) {
   const Grid grid = resolveGrid(Options{}.grid, paths, Paths{roi});
-  detail::Rings reduced;
+  detail::KeptRings kept;
   bool touching = false;
   detail::Workspace ws;
-  if (!detail::cancelOverlaps(detail::snapRings(paths, 0, grid), reduced, touching, ws.overlaps)) {
+  if (!detail::cancelOverlaps(detail::snapRings(paths, 0, grid), kept, touching, ws.overlaps)) {
     return false;
   }
+  const detail::Rings& reduced = kept.rings;
   for (std::vector<detail::IPoint> ring : reduced) {
     std::sort(ring.begin(), ring.end());
     if (std::adjacent_find(ring.begin(), ring.end()) != ring.end()) return false;
@@ -42,7 +43,7 @@ bool cancels(const Paths& paths, const Path& roi) {
   if (!touching) return detail::ringsAreSimple(reduced, ws.chains);
   detail::PinchedRings pinched;
   return detail::separatePinches(reduced, pinched) &&
-         detail::ringsAreSimple(pinched.separated, ws.chains);
+         detail::ringsAreSimple(pinched.separated.rings, ws.chains);
 }
 
 // Random tilings: blocks of 1x1, 1x2 and 2x1 cells of a 7x7 grid that do not overlap, each a

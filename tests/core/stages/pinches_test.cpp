@@ -60,7 +60,7 @@ bool separable(const Paths& paths, const Path& roi) {
   detail::PinchedRings pinched;
   detail::Workspace ws;
   return detail::separatePinches(snapped(paths, roi), pinched) &&
-         detail::ringsAreSimple(pinched.separated, ws.chains);
+         detail::ringsAreSimple(pinched.separated.rings, ws.chains);
 }
 
 // The region of `paths` through the stage and the nesting of the separated rings, against
@@ -69,8 +69,9 @@ bool regionMatches(const Paths& paths, FillRule rule, const std::string& what) {
   const Grid grid = resolveGrid(Options{}.grid, paths);
   detail::PinchedRings pinched;
   detail::Workspace ws;
-  if (!detail::separatePinches(detail::snapRings(paths, 0, grid), pinched) ||
-      !detail::ringsAreSimple(pinched.separated, ws.chains)) {
+  const detail::Rings rings = detail::snapRings(paths, 0, grid);  // pinched.rings may point here
+  if (!detail::separatePinches(rings, pinched) ||
+      !detail::ringsAreSimple(pinched.separated.rings, ws.chains)) {
     return false;
   }
   PolygonSet region;
