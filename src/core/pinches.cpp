@@ -162,8 +162,7 @@ IPoint primitiveStep(IPoint d) {
 
 }  // namespace
 
-bool separatePinches(const Rings& rings, PinchedRings& out, bool* overlapping) {
-  bool overlap = false;
+Pinches separatePinches(const Rings& rings, PinchedRings& out) {
   out.rings = &rings;
   out.split.clear();
   out.separated.clear();
@@ -171,7 +170,7 @@ bool separatePinches(const Rings& rings, PinchedRings& out, bool* overlapping) {
   std::uint64_t bits = 0;
   IPoint low = rings.empty() || rings[0].empty() ? IPoint{} : rings[0][0], high = low;
   for (const std::vector<IPoint>& ring : rings) {
-    if (ring.size() < 3) return false;
+    if (ring.size() < 3) return Pinches::refused;
     for (const IPoint p : ring) {
       bits |= std::uint64_t(p.x) | std::uint64_t(p.y);
       low = {std::min(low.x, p.x), std::min(low.y, p.y)};
@@ -181,14 +180,15 @@ bool separatePinches(const Rings& rings, PinchedRings& out, bool* overlapping) {
   // Every edge lies in the box: at most its diagonal long.
   const double w = double(high.x - low.x), h = double(high.y - low.y);
   const double longest = w * w + h * h;
-  if (bits == 0) return false;
+  if (bits == 0) return Pinches::none;
   const int k = __builtin_ctzll(bits);
-  if (k < kMinLowZeroBits) return false;
+  if (k < kMinLowZeroBits) return Pinches::none;
   std::vector<Visit>& twice = out.twice;
-  if (!visitsTwice(rings, k, out.table, twice, overlap) || twice.empty()) {
-    if (overlapping != nullptr) *overlapping = overlap;
-    return false;
+  bool overlapping = false;
+  if (!visitsTwice(rings, k, out.table, twice, overlapping)) {
+    return overlapping ? Pinches::overlapping : Pinches::refused;
   }
+  if (twice.empty()) return Pinches::none;
 
   // Each ring visiting a vertex twice, split there.
   std::vector<char>& selfPinched = out.selfPinched;
@@ -212,10 +212,10 @@ bool separatePinches(const Rings& rings, PinchedRings& out, bool* overlapping) {
         out.partner[std::size_t(twice[t].index)] = twice[t + 1].index;
         out.partner[std::size_t(twice[t + 1].index)] = twice[t].index;
       }
-      if (!splitAtSelfPinches(rings[r], out)) return false;
+      if (!splitAtSelfPinches(rings[r], out)) return Pinches::refused;
     }
     out.rings = &out.split.rings;
-    if (!visitsTwice(*out.rings, k, out.table, twice, overlap)) return false;
+    if (!visitsTwice(*out.rings, k, out.table, twice, overlapping)) return Pinches::refused;
   }
   const Rings& split = *out.rings;
 
@@ -239,22 +239,23 @@ bool separatePinches(const Rings& rings, PinchedRings& out, bool* overlapping) {
   for (std::size_t t = 0; t < twice.size(); t += 2) {
     const Visit& first = twice[t];
     const Visit& second = twice[t + 1];
-    if (first.ring == second.ring) return false;
+    if (first.ring == second.ring) return Pinches::refused;
     IPoint a, b, c, d;
     edgesAt(split, first, a, b);
     edgesAt(split, second, c, d);
     // Touching, not crossing: c and d in one sector between a and b.
     const bool cInAB = inSectorCcw(a, b, c);
-    if (cInAB != inSectorCcw(a, b, d)) return false;
+    if (cInAB != inSectorCcw(a, b, d)) return Pinches::refused;
     // Each pass's free sector: from in-edge to out-edge counter-clockwise, or the other one.
     const bool firstFreeAB = !cInAB;
     const bool secondFreeCD = !inSectorCcw(c, d, a);
     const auto convex = [](IPoint from, IPoint to) { return crossSign(from, to) > 0; };
     const bool cutFirst = firstFreeAB ? convex(a, b) : convex(b, a);
     const bool cutSecond = secondFreeCD ? convex(c, d) : convex(d, c);
-    if (!cutFirst && !cutSecond) return false;
+    if (!cutFirst && !cutSecond) return Pinches::refused;
     const Visit& cutAt = cutFirst ? first : second;
-    if (cutFirst ? !shortStep(a) || !shortStep(b) : !shortStep(c) || !shortStep(d)) return false;
+    if (cutFirst ? !shortStep(a) || !shortStep(b) : !shortStep(c) || !shortStep(d))
+      return Pinches::refused;
     cut[start[std::size_t(cutAt.ring)] + std::size_t(cutAt.index)] = 1;
     out.pinches.push_back({pointOf(first), first.ring, second.ring});
   }
@@ -277,7 +278,7 @@ bool separatePinches(const Rings& rings, PinchedRings& out, bool* overlapping) {
       separated.push_back({v.x + on.x, v.y + on.y});
     }
   }
-  return true;
+  return Pinches::separated;
 }
 
 bool pinchesKeepRings(const std::vector<PinchedRings::Pinch>& pinches,

@@ -544,13 +544,21 @@ bool intersectSimpleRingsConvex(const Rings& rings, FillRule rule,
                                 PolygonSet& out, const KnownSides* known = nullptr,
                                 const std::vector<PinchedRings::Pinch>* touchingInC = nullptr);
 
+/// What separatePinches() made of a set of rings.
+enum class Pinches {
+  separated,    ///< `out` holds them, ready for the simple-ring test
+  none,         ///< no point is visited twice (or the stage could not look: too few low zero bits)
+  overlapping,  ///< two edges leave a point the same way, or a point is visited three times:
+                ///< cancelOverlaps() may take them
+  refused,      ///< points are visited twice, but the stage cannot separate them
+};
 /// Prepares rings for the sweep-free paths where they touch only at vertices (pixel contours
-/// meeting at a pixel corner). False when a vertex is visited three times or more, no vertex
-/// twice, two edges at a pinch overlap, two rings cross at one, or the vertices lack the common
-/// low zero bits the cut needs (a fitted grid's pixel coordinates have about 20; 12 needed).
-/// `overlapping`, when not null, is set when the refusal came from two edges leaving a point the
-/// same way or a point visited three times (cancelOverlaps() may take such a set).
-bool separatePinches(const Rings& rings, PinchedRings& out, bool* overlapping = nullptr);
+/// meeting at a pixel corner). Refused when two edges at a pinch overlap, two rings cross at
+/// one, or a loop split off a ring has fewer than three vertices; `none` also when the vertices
+/// lack the common low zero bits the cut needs (a fitted grid's pixel coordinates have about 20;
+/// 12 needed). A point visited twice fails the simple-ring test, so only `none` leaves that test
+/// anything to take.
+Pinches separatePinches(const Rings& rings, PinchedRings& out);
 /// Prepares rings whose edges run along each other (overlaps.cpp): edges on one line split at
 /// the ends of the others inside them, equal edges in opposite directions cancelled, the rest
 /// linked into rings with the same winding numbers off the cancelled edges, each visiting each

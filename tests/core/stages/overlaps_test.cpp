@@ -42,7 +42,7 @@ bool cancels(const Paths& paths, const Path& roi) {
   }
   if (!touching) return detail::ringsAreSimple(reduced, ws.chains);
   detail::PinchedRings pinched;
-  return detail::separatePinches(reduced, pinched) &&
+  return detail::separatePinches(reduced, pinched) == detail::Pinches::separated &&
          detail::ringsAreSimple(pinched.separated.rings, ws.chains);
 }
 

@@ -59,7 +59,7 @@ detail::Rings snapped(const Paths& paths, const Path& roi) {
 bool separable(const Paths& paths, const Path& roi) {
   detail::PinchedRings pinched;
   detail::Workspace ws;
-  return detail::separatePinches(snapped(paths, roi), pinched) &&
+  return detail::separatePinches(snapped(paths, roi), pinched) == detail::Pinches::separated &&
          detail::ringsAreSimple(pinched.separated.rings, ws.chains);
 }
 
@@ -70,7 +70,7 @@ bool regionMatches(const Paths& paths, FillRule rule, const std::string& what) {
   detail::PinchedRings pinched;
   detail::Workspace ws;
   const detail::Rings rings = detail::snapRings(paths, 0, grid);  // pinched.rings may point here
-  if (!detail::separatePinches(rings, pinched) ||
+  if (detail::separatePinches(rings, pinched) != detail::Pinches::separated ||
       !detail::ringsAreSimple(pinched.separated.rings, ws.chains)) {
     return false;
   }
@@ -273,22 +273,25 @@ TEST(StagePinches, RefusesWhatItCannotSeparate) {
                        {{0, 0}, {-20, -10}, {-20, 10}},
                        {{0, 0}, {10, 20}, {-10, 20}}};
   detail::PinchedRings pinched;
-  EXPECT_FALSE(detail::separatePinches(snapped(crossing, roi), pinched));  // three visits
+  EXPECT_EQ(detail::separatePinches(snapped(crossing, roi), pinched),
+            detail::Pinches::overlapping);  // three visits: the overlap stage's case
   const Paths x{{{0, 0}, {20, 10}, {20, 20}, {-20, -10}, {-20, -20}},
                 {{0, 0}, {-10, 20}, {-20, 20}, {10, -20}, {20, -20}}};
+  EXPECT_EQ(detail::separatePinches(snapped(x, roi), pinched), detail::Pinches::refused);
   EXPECT_FALSE(separable(x, roi));
   // Edges overlapping at the shared vertex.
   const Paths overlap{{{0, 0}, {20, 0}, {20, 20}}, {{0, 0}, {10, 0}, {10, -20}}};
-  EXPECT_FALSE(detail::separatePinches(snapped(overlap, roi), pinched));
+  EXPECT_EQ(detail::separatePinches(snapped(overlap, roi), pinched), detail::Pinches::overlapping);
   // A vertex of a third ring on an edge at the pinch: the kept pass there touches it.
   const Paths onEdge{
       {{0, 0}, {10, 10}, {0, 10}}, {{0, 0}, {-10, -10}, {0, -10}}, {{-5, 5}, {5, -5}, {10, -20}}};
   EXPECT_FALSE(separable(onEdge, roi));
   // No vertex visited twice.
-  EXPECT_FALSE(detail::separatePinches(snapped({{{0, 0}, {10, 0}, {0, 10}}}, roi), pinched));
+  EXPECT_EQ(detail::separatePinches(snapped({{{0, 0}, {10, 0}, {0, 10}}}, roi), pinched),
+            detail::Pinches::none);
   // Unit coordinates on the unit grid: no low zero bits to cut a corner with.
   const detail::Rings unit{{{0, 0}, {10, 0}, {10, 10}}, {{10, 10}, {20, 10}, {20, 20}}};
-  EXPECT_FALSE(detail::separatePinches(unit, pinched));
+  EXPECT_EQ(detail::separatePinches(unit, pinched), detail::Pinches::none);
   for (const Paths* set : {&x, &overlap, &onEdge}) {
     for (const FillRule rule : kRules) {
       testing::expectSameSet(intersect(*set, {roi}, rule),
