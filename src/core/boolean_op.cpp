@@ -232,16 +232,17 @@ PolygonSet intersectConvexRing(const SnappedOperand& other, const SnappedOperand
   if (grouped && (groups.count() > 1 || groups.apart > 0)) {
     std::vector<PolygonSet> parts;
     parts.reserve(groups.count());
-    Rings group;
+    KeptRings group;  // a group's rings, copied; their arrays serve the next groups
     std::vector<KnownSides> known;
     for (std::size_t g = 0; g < groups.count(); ++g) {
       group.clear();
       known.clear();
       for (std::size_t k = groups.groupStart[g]; k < groups.groupStart[g + 1]; ++k) {
-        group.push_back(other.rings[std::size_t(groups.rings[k])]);
+        const std::vector<IPoint>& ring = other.rings[std::size_t(groups.rings[k])];
+        group.add().assign(ring.begin(), ring.end());
         known.push_back(groups.sidesOf(std::size_t(groups.rings[k])));
       }
-      parts.push_back(intersectRings(group, other.rule, convex, grid, budget, ws,
+      parts.push_back(intersectRings(group.rings, other.rule, convex, grid, budget, ws,
                                      groups.groupInClosed(g), known.data()));
     }
     return mergeGroups(parts);
