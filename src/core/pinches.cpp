@@ -125,8 +125,9 @@ bool visitsTwice(const Rings& rings, int k, std::vector<std::uint64_t>& table,
 
 // Splits ring `ring` at the vertices it visits twice (p.partner[i]: the other visit of vertex
 // i, or -1) into p.split, the stack method: a vertex seen again while its first visit is on the
-// stack pops the loop between them as a ring. False when a loop has fewer than three vertices.
-bool splitAtSelfPinches(const std::vector<IPoint>& ring, PinchedRings& p) {
+// stack pops the loop between them as a ring. The two visits of a vertex so land in two loops.
+// moved[i]: where vertex i went. False when a loop has fewer than three vertices.
+bool splitAtSelfPinches(const std::vector<IPoint>& ring, PinchedRings& p, Visit* moved) {
   const int n = int(ring.size());
   std::vector<int>& stack = p.stack;
   std::vector<int>& position = p.position;
@@ -135,8 +136,10 @@ bool splitAtSelfPinches(const std::vector<IPoint>& ring, PinchedRings& p) {
   const auto emit = [&](std::size_t from) {
     if (stack.size() - from < 3) return false;
     std::vector<IPoint>& loop = p.split.add();
+    const int at = int(p.split.rings.size()) - 1;
     loop.reserve(stack.size() - from);
     for (std::size_t s = from; s < stack.size(); ++s) {
+      moved[stack[s]] = {at, int(loop.size())};
       loop.push_back(ring[std::size_t(stack[s])]);
       position[std::size_t(stack[s])] = -1;
     }
@@ -201,9 +204,22 @@ Pinches separatePinches(const Rings& rings, PinchedRings& out) {
     }
   }
   if (anySelf) {
+    // Each vertex's place in the split rings (flat by ring: base[r] + index), and the pairs of
+    // visits moved there, not found again: the split keeps the points, their number of visits
+    // and the directions of the edges at each, so visitsTwice()'s other findings stand (a
+    // crossing is found at the cut below). The earlier visit stays first: the rings are split in
+    // order, and the loop holding a vertex's first visit is emitted before the ring holding its
+    // second. (The pairs' order matters nowhere.)
+    std::vector<std::size_t>& base = out.start;
+    base.assign(rings.size() + 1, 0);
+    for (std::size_t r = 0; r < rings.size(); ++r) base[r + 1] = base[r] + rings[r].size();
+    std::vector<Visit>& moved = out.moved;
+    moved.resize(base.back());
     for (std::size_t r = 0; r < rings.size(); ++r) {
       if (selfPinched[r] == 0) {
+        const int at = int(out.split.rings.size());
         out.split.add().assign(rings[r].begin(), rings[r].end());
+        for (std::size_t i = 0; i < rings[r].size(); ++i) moved[base[r] + i] = {at, int(i)};
         continue;
       }
       out.partner.assign(rings[r].size(), -1);
@@ -212,10 +228,12 @@ Pinches separatePinches(const Rings& rings, PinchedRings& out) {
         out.partner[std::size_t(twice[t].index)] = twice[t + 1].index;
         out.partner[std::size_t(twice[t + 1].index)] = twice[t].index;
       }
-      if (!splitAtSelfPinches(rings[r], out)) return Pinches::refused;
+      if (!splitAtSelfPinches(rings[r], out, moved.data() + base[r])) return Pinches::refused;
     }
     out.rings = &out.split.rings;
-    if (!visitsTwice(*out.rings, k, out.table, twice, overlapping)) return Pinches::refused;
+    for (Visit& visit : twice) {
+      visit = moved[base[std::size_t(visit.ring)] + std::size_t(visit.index)];
+    }
   }
   const Rings& split = *out.rings;
 

@@ -505,10 +505,11 @@ struct PinchedRings {
   /// The pinches strictly inside the convex ring (boolean_op.cpp's intersectPinched()).
   std::vector<Pinch> touching;
   // The working arrays: a hash table of the points, the points visited twice (pairs of
-  // visits), a ring's vertices visited twice (the other visit's index, or -1), the stack of
-  // the split, each ring's first vertex (flat), and the vertices whose corner is cut.
+  // visits), where the split moved each vertex, a ring's vertices visited twice (the other
+  // visit's index, or -1), the stack of the split, each ring's first vertex (flat), and the
+  // vertices whose corner is cut.
   std::vector<std::uint64_t> table;
-  std::vector<Visit> twice;
+  std::vector<Visit> twice, moved;
   std::vector<int> partner, stack, position;
   std::vector<std::size_t> start;
   std::vector<char> selfPinched, cut;
@@ -520,6 +521,7 @@ struct PinchedRings {
     f(touching);
     f(table);
     f(twice);
+    f(moved);
     f(partner);
     f(stack);
     f(position);

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <random>
 #include <string>
@@ -266,6 +267,58 @@ TEST(StagePinches, RandomHolesTouchingTheirOuterRingMatchTheGeneralPath) {
   EXPECT_GT(taken, 30);
 }
 
+// A ring through a vertex twice is split there, and the pairs of visits are moved to the split
+// rings (not found again): the pinches and the separated rings must be those the stage makes of
+// the split rings given as they are. Rings through v twice (a figure eight or a loop inside,
+// either part reversed), with another ring touching them at a second vertex now and then.
+TEST(StagePinches, SplitRingsKeepTheirPinches) {
+  std::mt19937 rng(20261208);
+  const Path roi{{-1000, -1000}, {1000, -1000}, {1000, 1000}, {-1000, 1000}};
+  int compared = 0, withSecond = 0;
+  for (int trial = 0; trial < 300; ++trial) {
+    const Point v(200, 200);
+    const double angle = std::uniform_real_distribution<double>(0, 2 * M_PI)(rng);
+    const Point dir(std::cos(angle), std::sin(angle));
+    const bool inside = trial % 2 == 1;
+    Path a = starThrough(rng, 6 + int(rng() % 10), v + dir * (inside ? 80.0 : 60.0),
+                         inside ? 80 : 60, v);
+    Path b = inside ? starThrough(rng, 4 + int(rng() % 6), v + dir * 25.0, 22, v)
+                    : starThrough(rng, 6 + int(rng() % 10), v - dir * 50.0, 50, v);
+    if (rng() % 2 == 0) a = reversed(a);
+    if (rng() % 2 == 0) b = reversed(b);
+    Path joined = a;
+    joined.insert(joined.end(), b.begin(), b.end());
+    Paths set{joined};
+    if (trial % 3 == 0) {  // a ring outside touching a at one of its other vertices
+      const Point u = a[a.size() / 2];
+      const Point centre = v + dir * (inside ? 80.0 : 60.0);
+      const Point out =
+          (u - centre) * (20.0 / std::max(1.0, std::hypot(u.x - centre.x, u.y - centre.y)));
+      set.push_back(starThrough(rng, 5, u + out, 18, u));
+    }
+    const detail::Rings rings = snapped(set, roi);
+    detail::PinchedRings once, again;
+    if (detail::separatePinches(rings, once) != detail::Pinches::separated) continue;
+    ASSERT_NE(once.rings, &rings) << trial;  // the ring through v was split
+    const detail::Rings split = *once.rings;
+    ASSERT_EQ(detail::separatePinches(split, again), detail::Pinches::separated) << trial;
+    EXPECT_EQ(once.separated.rings, again.separated.rings) << trial;
+    // The same pinches, in any order.
+    const auto listed = [](const detail::PinchedRings& p) {
+      std::vector<std::array<std::int64_t, 4>> list;
+      for (const auto& pinch : p.pinches)
+        list.push_back({pinch.at.x, pinch.at.y, pinch.ring, pinch.other});
+      std::sort(list.begin(), list.end());
+      return list;
+    };
+    EXPECT_EQ(listed(once), listed(again)) << trial;
+    ++compared;
+    withSecond += once.pinches.size() > 1 ? 1 : 0;
+  }
+  EXPECT_GT(compared, 150);
+  EXPECT_GT(withSecond, 20);
+}
+
 TEST(StagePinches, RefusesWhatItCannotSeparate) {
   const Path roi{{-50, -50}, {50, -50}, {50, 50}, {-50, 50}};
   // Two rings crossing at a shared vertex.
@@ -278,6 +331,10 @@ TEST(StagePinches, RefusesWhatItCannotSeparate) {
   const Paths x{{{0, 0}, {20, 10}, {20, 20}, {-20, -10}, {-20, -20}},
                 {{0, 0}, {-10, 20}, {-20, 20}, {10, -20}, {20, -20}}};
   EXPECT_EQ(detail::separatePinches(snapped(x, roi), pinched), detail::Pinches::refused);
+  // The same as one ring through the vertex twice: split there, then found crossing.
+  Path xJoined = x[0];
+  xJoined.insert(xJoined.end(), x[1].begin(), x[1].end());
+  EXPECT_EQ(detail::separatePinches(snapped({xJoined}, roi), pinched), detail::Pinches::refused);
   EXPECT_FALSE(separable(x, roi));
   // Edges overlapping at the shared vertex.
   const Paths overlap{{{0, 0}, {20, 0}, {20, 20}}, {{0, 0}, {10, 0}, {10, -20}}};
