@@ -33,6 +33,7 @@
 #include <cmath>
 #include <cstdint>
 #include <numeric>
+#include <optional>
 #include <vector>
 
 #include <boost/pending/disjoint_sets.hpp>
@@ -275,7 +276,7 @@ Pinches separatePinches(const Rings& rings, PinchedRings& out) {
     if (cutFirst ? !shortStep(a) || !shortStep(b) : !shortStep(c) || !shortStep(d))
       return Pinches::refused;
     cut[start[std::size_t(cutAt.ring)] + std::size_t(cutAt.index)] = 1;
-    out.pinches.push_back({pointOf(first), first.ring, second.ring});
+    out.pinches.push_back({pointOf(first), first.ring, second.ring, first.index, second.index});
   }
 
   // The separated rings: each cut vertex replaced by the grid points a step along its edges.
@@ -299,6 +300,101 @@ Pinches separatePinches(const Rings& rings, PinchedRings& out) {
   return Pinches::separated;
 }
 
+namespace {
+
+// The face of the region whose boundary a pinch joins two rings of (the index of its outer
+// ring, -1 when it has none), or nullopt when it joins none: a ring bounds nothing (the vertex is
+// on the region's boundary once), or the rings bound two faces (two outer rings side by side, an
+// island in a hole).
+std::optional<int> faceOf(const PinchedRings::Pinch& pinch,
+                          const std::vector<RingNesting>& nesting) {
+  const RingNesting& a = nesting[std::size_t(pinch.ring)];
+  const RingNesting& b = nesting[std::size_t(pinch.other)];
+  if (!a.inResult || !b.inResult) return std::nullopt;
+  const int face = a.filledInside ? pinch.ring : a.resultAround;
+  if (face != (b.filledInside ? pinch.other : b.resultAround)) return std::nullopt;
+  return face;
+}
+
+// Into p.traced: the region's boundary as stages 1 to 4 trace it. Each ring that bounds the
+// region is walked with the region on its left (so the traced rings' winding number is 1 in
+// the region and 0 outside it, whatever the fill rule was); a ring that bounds nothing is left
+// out. At a pinch joining two rings of one face, the two filled sectors are each bounded by an
+// edge of both rings (the other ring lies in one's filled sector), and the trace arriving along
+// one ring leaves along the other: the two visits swap their successors. The walks (closed,
+// each through a vertex as often as it arrives there) are the traced rings; a walk through a
+// vertex twice is split by separatePinches() afterwards, as tracing splits it. False when the
+// face of a pinch has no outer ring.
+bool traceFaces(const Rings& rings, const std::vector<PinchedRings::Pinch>& pinches,
+                const std::vector<RingNesting>& nesting, PinchedRings& p) {
+  std::vector<std::size_t>& start = p.start;
+  start.assign(rings.size() + 1, 0);
+  for (std::size_t r = 0; r < rings.size(); ++r) start[r + 1] = start[r] + rings[r].size();
+  std::vector<int>& succ = p.partner;  // the next vertex along the trace (flat)
+  succ.resize(start.back());
+  for (std::size_t r = 0; r < rings.size(); ++r) {
+    const int n = int(rings[r].size()), f = int(start[r]);
+    const bool forward = nesting[r].lowest.ccw == nesting[r].filledInside;
+    for (int i = 0; i < n; ++i)
+      succ[std::size_t(f + i)] = f + (forward ? (i + 1) % n : (i + n - 1) % n);
+  }
+  for (const PinchedRings::Pinch& pinch : pinches) {
+    const std::optional<int> face = faceOf(pinch, nesting);
+    if (!face) continue;
+    if (*face < 0) return false;
+    const std::size_t x = start[std::size_t(pinch.ring)] + std::size_t(pinch.index);
+    const std::size_t y = start[std::size_t(pinch.other)] + std::size_t(pinch.otherIndex);
+    std::swap(succ[x], succ[y]);
+  }
+  p.traced.clear();
+  std::vector<char>& walked = p.cut;
+  walked.assign(start.back(), 0);
+  const auto pointAt = [&](std::size_t g) {
+    const std::size_t r =
+        std::size_t(std::upper_bound(start.begin(), start.end(), g) - start.begin()) - 1;
+    return rings[r][g - start[r]];
+  };
+  for (std::size_t r = 0; r < rings.size(); ++r) {
+    if (!nesting[r].inResult) continue;
+    for (std::size_t g = start[r]; g < start[r + 1]; ++g) {
+      if (walked[g] != 0) continue;
+      std::vector<IPoint>& ring = p.traced.add();
+      for (std::size_t e = g; walked[e] == 0; e = std::size_t(succ[e])) {
+        walked[e] = 1;
+        ring.push_back(pointAt(e));
+      }
+    }
+  }
+  return true;
+}
+
+// Two rings through a pinch at their smallest vertex come out in the order stages 1 to 4 emit
+// them: by their reference pieces there, the lower edge first (edges from the smallest vertex
+// point right, or straight up, and the two rings' edges there do not interleave, or one ring's
+// lie between the other's). The chain sweep reached them by their separated rings, where one of
+// the two has lost that vertex to the cut: next to each other (no grid point lies between the
+// vertex and a step from it), maybe the other way round.
+void orderAtSharedLowest(const Rings& rings, ChainScratch& scratch) {
+  std::vector<int>& reached = scratch.reached;
+  const auto lowestOf = [&](int r) {
+    return rings[std::size_t(r)][scratch.nesting[std::size_t(r)].lowest.index];
+  };
+  const auto lowerEdge = [&](int r) {
+    const std::vector<IPoint>& ring = rings[std::size_t(r)];
+    const std::size_t n = ring.size(), i = scratch.nesting[std::size_t(r)].lowest.index;
+    const IPoint in = minus(ring[(i + n - 1) % n], ring[i]), on = minus(ring[(i + 1) % n], ring[i]);
+    return crossSign(in, on) > 0 ? in : on;  // the clockwise one of the two
+  };
+  for (std::size_t k = 0; k + 1 < reached.size(); ++k) {
+    const int a = reached[k], b = reached[k + 1];
+    if (lowestOf(a) == lowestOf(b) && crossSign(lowerEdge(b), lowerEdge(a)) > 0) {
+      std::swap(reached[k], reached[k + 1]);
+    }
+  }
+}
+
+}  // namespace
+
 bool pinchesKeepRings(const std::vector<PinchedRings::Pinch>& pinches,
                       const std::vector<RingNesting>& nesting,
                       const std::vector<char>* joinedInFace) {
@@ -306,15 +402,13 @@ bool pinchesKeepRings(const std::vector<PinchedRings::Pinch>& pinches,
   const std::size_t n = nesting.size();
   boost::disjoint_sets_with_storage<> joined(2 * n);
   for (const PinchedRings::Pinch& pinch : pinches) {
-    const RingNesting& a = nesting[std::size_t(pinch.ring)];
-    const RingNesting& b = nesting[std::size_t(pinch.other)];
-    if (!a.inResult || !b.inResult) continue;  // the vertex is on the region's boundary once
-    const int face = a.filledInside ? pinch.ring : a.resultAround;
-    if (face != (b.filledInside ? pinch.other : b.resultAround)) continue;  // two faces
-    if (face < 0) return false;
+    const std::optional<int> face = faceOf(pinch, nesting);
+    if (!face) continue;
+    if (*face < 0) return false;
     const auto node = [&](int r) {
-      return joinedInFace != nullptr && (*joinedInFace)[std::size_t(r)] != 0 ? n + std::size_t(face)
-                                                                             : std::size_t(r);
+      return joinedInFace != nullptr && (*joinedInFace)[std::size_t(r)] != 0
+                 ? n + std::size_t(*face)
+                 : std::size_t(r);
     };
     const std::size_t r = joined.find_set(node(pinch.ring)), q = joined.find_set(node(pinch.other));
     if (r == q) return false;  // a cycle
@@ -323,10 +417,21 @@ bool pinchesKeepRings(const std::vector<PinchedRings::Pinch>& pinches,
   return true;
 }
 
-bool pinchedRingsRegion(const PinchedRings& pinched, FillRule rule, ChainScratch& scratch,
+bool pinchedRingsRegion(PinchedRings& pinched, FillRule rule, ChainScratch& scratch,
                         const Grid& grid, PolygonSet& out) {
   nestSimpleRings(*pinched.rings, rule, scratch);
-  if (!pinchesKeepRings(pinched.pinches, scratch.nesting)) return false;
+  if (!pinchesKeepRings(pinched.pinches, scratch.nesting)) {
+    // A cycle of pinches in a face (W5 scene_08: a hole touching its contour at three pixel
+    // corners): the rings stages 1 to 4 trace there, which the stage must take as they are.
+    if (!traceFaces(*pinched.rings, pinched.pinches, scratch.nesting, pinched)) return false;
+    if (separatePinches(pinched.traced.rings, pinched) != Pinches::separated ||
+        !ringsAreSimple(pinched.separated.rings, scratch)) {
+      return false;
+    }
+    nestSimpleRings(*pinched.rings, FillRule::Positive, scratch);  // winding 1 in the region
+    if (!pinchesKeepRings(pinched.pinches, scratch.nesting)) return false;
+  }
+  orderAtSharedLowest(*pinched.rings, scratch);
   out = nestedRingsRegion(*pinched.rings, scratch, grid);
   return true;
 }

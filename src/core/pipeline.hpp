@@ -485,7 +485,8 @@ Path simpleRingPath(const std::vector<IPoint>& ring, LowestVertex lowest, bool h
 struct PinchedRings {
   struct Pinch {
     IPoint at;
-    int ring, other;  ///< the two rings of `rings` through it
+    int ring, other;        ///< the two rings of `rings` through it
+    int index, otherIndex;  ///< its index in each
   };
   /// A visit of a point: a ring and the index of the point in it.
   struct Visit {
@@ -502,6 +503,9 @@ struct PinchedRings {
   /// `rings`.
   KeptRings separated;
   std::vector<Pinch> pinches;
+  /// The rings stages 1 to 4 trace where pinches join the rings of one face in a cycle
+  /// (pinchedRingsRegion()).
+  KeptRings traced;
   /// The pinches strictly inside the convex ring (boolean_op.cpp's intersectPinched()).
   std::vector<Pinch> touching;
   // The working arrays: a hash table of the points, the points visited twice (pairs of
@@ -518,6 +522,7 @@ struct PinchedRings {
     f(split);
     f(separated);
     f(pinches);
+    f(traced);
     f(touching);
     f(table);
     f(twice);
@@ -583,8 +588,10 @@ bool pinchesKeepRings(const std::vector<PinchedRings::Pinch>& pinches,
                       const std::vector<RingNesting>& nesting,
                       const std::vector<char>* joinedInFace = nullptr);
 /// The region of pinched rings whose separated rings ringsAreSimple() accepted (just before, on
-/// `scratch`), as simpleRingsRegion(); false unless pinchesKeepRings().
-bool pinchedRingsRegion(const PinchedRings& pinched, FillRule rule, ChainScratch& scratch,
+/// `scratch`), as simpleRingsRegion(). When pinches join the rings of a face in a cycle, the
+/// rings stages 1 to 4 trace there (PinchedRings::traced) take the stage again: false when it
+/// refuses them or pinchesKeepRings() fails for them. Reuses `pinched`'s arrays.
+bool pinchedRingsRegion(PinchedRings& pinched, FillRule rule, ChainScratch& scratch,
                         const Grid& grid, PolygonSet& out);
 
 /// Whether every vertex of the rings lies inside the convex ring (orientation

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -48,6 +49,24 @@ inline Paths readPaths(const nlohmann::json& j) {
     Path p;
     for (const auto& v : ring) p.emplace_back(v.at(0).get<double>(), v.at(1).get<double>());
     out.push_back(std::move(p));
+  }
+  return out;
+}
+
+/// A fixture of tests/data/core: its subject, and the first ring of its clip (an ROI).
+struct SubjectAndRoi {
+  std::string file;
+  Paths subject;
+  Path roi;
+};
+/// The fixtures of tests/data/core whose names start with `prefix`.
+inline std::vector<SubjectAndRoi> coreFixtures(const std::string& prefix) {
+  std::vector<SubjectAndRoi> out;
+  for (const std::string& file : jsonFiles({"core"})) {
+    if (std::filesystem::path(file).filename().string().rfind(prefix, 0) != 0) continue;
+    std::ifstream in(file);
+    const nlohmann::json j = nlohmann::json::parse(in);
+    out.push_back({file, readPaths(j.at("subject")), readPaths(j.at("clip")).at(0)});
   }
   return out;
 }

@@ -4,7 +4,6 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <fstream>
 #include <random>
 #include <string>
 #include <vector>
@@ -171,21 +170,15 @@ TEST(StageOverlaps, RefusesWhatItCannotPair) {
 // The W5 groups the stage was written for (tests/data/core/overlap_*.json, in grid units): taken,
 // and the same as the general path under every rule.
 TEST(StageOverlaps, PixelContourWallsMatchTheGeneralPath) {
-  int files = 0;
-  for (const std::string& file : testing::jsonFiles({"core"})) {
-    if (file.find("/overlap_") == std::string::npos) continue;
-    ++files;
-    std::ifstream in(file);
-    const nlohmann::json j = nlohmann::json::parse(in);
-    const Paths set = testing::readPaths(j.at("subject"));
-    const Path roi = testing::readPaths(j.at("clip"))[0];
+  const std::vector<testing::SubjectAndRoi> fixtures = testing::coreFixtures("overlap_");
+  for (const auto& [file, set, roi] : fixtures) {
     EXPECT_TRUE(cancels(set, roi)) << file;
     for (const FillRule rule : kRules) {
       testing::expectSameSet(intersect(set, {roi}, rule),
                              stages::generalIntersect(set, {roi}, rule, rule), file);
     }
   }
-  EXPECT_EQ(files, 2);
+  EXPECT_EQ(fixtures.size(), 2U);
 }
 
 }  // namespace
