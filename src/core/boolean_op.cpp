@@ -83,7 +83,6 @@ bool edgeAlongSide(const Rings& rings, const KnownSides* known, std::size_t m) {
 bool intersectOverlapping(const Rings& rings, FillRule rule, const SnappedOperand& convex,
                           const Grid& grid, Workspace& ws, bool inside, PolygonSet& out) {
   bool touching = false;
-  ws.generalPathUsed = true;  // the stage's arrays are recycled with the general path's
   const Rings& reduced = ws.overlaps.reduced.rings;
   if (!cancelOverlaps(rings, ws.overlaps.reduced, touching, ws.overlaps)) return false;
   if (touching) {
@@ -146,7 +145,8 @@ PolygonSet intersectRings(const Rings& rings, FillRule rule, const SnappedOperan
     const std::size_t m = convex.rings[0].size();
     const bool alongSide = !inside && known != nullptr && m <= std::size_t(kMaxSides) &&
                            edgeAlongSide(rings, known, m);
-    ws.generalPathUsed = true;  // the pinch stage's arrays are recycled with the general path's
+    ws.generalPathUsed = true;  // the pinch and overlap stages' arrays are recycled with the
+                                // general path's
     const Pinches pinches = alongSide ? Pinches::refused : separatePinches(rings, ws.pinched);
     if ((pinches == Pinches::separated &&
          intersectPinched(rule, convex, grid, ws, inside, direct)) ||

@@ -273,8 +273,9 @@ Pinches separatePinches(const Rings& rings, PinchedRings& out) {
     const bool cutSecond = secondFreeCD ? convex(c, d) : convex(d, c);
     if (!cutFirst && !cutSecond) return Pinches::refused;
     const Visit& cutAt = cutFirst ? first : second;
-    if (cutFirst ? !shortStep(a) || !shortStep(b) : !shortStep(c) || !shortStep(d))
+    if (cutFirst ? !shortStep(a) || !shortStep(b) : !shortStep(c) || !shortStep(d)) {
       return Pinches::refused;
+    }
     cut[start[std::size_t(cutAt.ring)] + std::size_t(cutAt.index)] = 1;
     out.pinches.push_back({pointOf(first), first.ring, second.ring, first.index, second.index});
   }
@@ -335,8 +336,9 @@ bool traceFaces(const Rings& rings, const std::vector<PinchedRings::Pinch>& pinc
   for (std::size_t r = 0; r < rings.size(); ++r) {
     const int n = int(rings[r].size()), f = int(start[r]);
     const bool forward = nesting[r].lowest.ccw == nesting[r].filledInside;
-    for (int i = 0; i < n; ++i)
+    for (int i = 0; i < n; ++i) {
       succ[std::size_t(f + i)] = f + (forward ? (i + 1) % n : (i + n - 1) % n);
+    }
   }
   for (const PinchedRings::Pinch& pinch : pinches) {
     const std::optional<int> face = faceOf(pinch, nesting);

@@ -468,8 +468,8 @@ struct Workspace {
   /// Set by the stages of the general path (preclipConvex(), resolveGeneral(), splitEdges())
   /// and by the pinch and overlap stages, the only ones that take arrays beyond `chains`,
   /// `weiler` and `operandRings`: recycleAll()
-  /// recycles the others only after a call that set it. A call on a sweep-free path (W4's small
-  /// contours) then walks 21 arrays, not 59.
+  /// recycles the others only after a call that set it. A call that only took the paths of
+  /// single contours (W4's small contours) then walks the arrays of `chains` and `weiler` alone.
   bool generalPathUsed = false;
 
   /// Re-entry guard: set while a call uses this workspace (see WorkspaceLease).
