@@ -370,14 +370,14 @@ bool traceFaces(const Rings& rings, const std::vector<PinchedRings::Pinch>& pinc
   return true;
 }
 
-// Two rings through a pinch at their smallest vertex come out in the order stages 1 to 4 emit
-// them: by their reference pieces there, the lower edge first (edges from the smallest vertex
-// point right, or straight up, and the two rings' edges there do not interleave, or one ring's
-// lie between the other's). The chain sweep reached them by their separated rings, where one of
-// the two has lost that vertex to the cut: next to each other (no grid point lies between the
-// vertex and a step from it), maybe the other way round.
-void orderAtSharedLowest(const Rings& rings, ChainScratch& scratch) {
-  std::vector<int>& reached = scratch.reached;
+// The rings in the order stages 1 to 4 emit them: by their smallest vertex, then, for two rings
+// through a pinch there, by their reference pieces, the lower edge first (edges from the
+// smallest vertex point right or straight up, and the two rings' edges there do not interleave:
+// one's lie below the other's, or between them, the enclosing ring's lower edge lowest). The
+// chain sweep reached them by their separated rings, where a ring cut at its smallest vertex
+// starts a step to the right of it, after any ring whose smallest vertex lies straight above.
+// A ring around another comes first in this order too, as nestedRingsRegion() needs.
+void orderAsTraced(const Rings& rings, ChainScratch& scratch) {
   const auto lowestOf = [&](int r) {
     return rings[std::size_t(r)][scratch.nesting[std::size_t(r)].lowest.index];
   };
@@ -387,12 +387,11 @@ void orderAtSharedLowest(const Rings& rings, ChainScratch& scratch) {
     const IPoint in = minus(ring[(i + n - 1) % n], ring[i]), on = minus(ring[(i + 1) % n], ring[i]);
     return crossSign(in, on) > 0 ? in : on;  // the clockwise one of the two
   };
-  for (std::size_t k = 0; k + 1 < reached.size(); ++k) {
-    const int a = reached[k], b = reached[k + 1];
-    if (lowestOf(a) == lowestOf(b) && crossSign(lowerEdge(b), lowerEdge(a)) > 0) {
-      std::swap(reached[k], reached[k + 1]);
-    }
-  }
+  std::sort(scratch.reached.begin(), scratch.reached.end(), [&](int a, int b) {
+    const IPoint p = lowestOf(a), q = lowestOf(b);
+    if (p != q) return p < q;
+    return crossSign(lowerEdge(a), lowerEdge(b)) > 0;
+  });
 }
 
 }  // namespace
@@ -433,7 +432,7 @@ bool pinchedRingsRegion(PinchedRings& pinched, FillRule rule, ChainScratch& scra
     nestSimpleRings(*pinched.rings, FillRule::Positive, scratch);  // winding 1 in the region
     if (!pinchesKeepRings(pinched.pinches, scratch.nesting)) return false;
   }
-  orderAtSharedLowest(*pinched.rings, scratch);
+  orderAsTraced(*pinched.rings, scratch);
   out = nestedRingsRegion(*pinched.rings, scratch, grid);
   return true;
 }
