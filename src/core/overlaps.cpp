@@ -63,18 +63,14 @@ std::uint64_t hashOf(const Line& l) {
 // The rings flat: each vertex's point, successor and predecessor; s.first holds the flat index
 // of each ring's first vertex (and the total). False when every point is the origin.
 bool flatten(const Rings& rings, OverlapScratch& s) {
-  s.first.resize(rings.size() + 1);
-  s.first[0] = 0;
-  for (std::size_t r = 0; r < rings.size(); ++r) {
-    s.first[r + 1] = s.first[r] + int(rings[r].size());
-  }
-  const std::size_t count = std::size_t(s.first.back());
+  ringStarts(rings, s.first);
+  const std::size_t count = s.first.back();
   s.points.resize(count);
   s.next.resize(count);
   s.prev.resize(count);
   std::uint64_t bits = 0;
   for (std::size_t r = 0; r < rings.size(); ++r) {
-    const int f = s.first[r], n = int(rings[r].size());
+    const int f = int(s.first[r]), n = int(rings[r].size());
     for (int i = 0; i < n; ++i) {
       const IPoint p = rings[r][std::size_t(i)];
       s.points[std::size_t(f + i)] = p;

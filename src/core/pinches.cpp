@@ -212,8 +212,7 @@ Pinches separatePinches(const Rings& rings, PinchedRings& out) {
     // order, and the loop holding a vertex's first visit is emitted before the ring holding its
     // second. (The pairs' order matters nowhere.)
     std::vector<std::size_t>& base = out.start;
-    base.assign(rings.size() + 1, 0);
-    for (std::size_t r = 0; r < rings.size(); ++r) base[r + 1] = base[r] + rings[r].size();
+    ringStarts(rings, base);
     std::vector<Visit>& moved = out.moved;
     moved.resize(base.back());
     for (std::size_t r = 0; r < rings.size(); ++r) {
@@ -240,8 +239,7 @@ Pinches separatePinches(const Rings& rings, PinchedRings& out) {
 
   // At each pinch, the pass whose corner is cut.
   std::vector<std::size_t>& start = out.start;
-  start.assign(split.size() + 1, 0);
-  for (std::size_t r = 0; r < split.size(); ++r) start[r + 1] = start[r] + split[r].size();
+  ringStarts(split, start);
   std::vector<char>& cut = out.cut;
   cut.assign(start.back(), 0);
   const auto pointOf = [&](const Visit& at) {
@@ -329,8 +327,7 @@ std::optional<int> faceOf(const PinchedRings::Pinch& pinch,
 bool traceFaces(const Rings& rings, const std::vector<PinchedRings::Pinch>& pinches,
                 const std::vector<RingNesting>& nesting, PinchedRings& p) {
   std::vector<std::size_t>& start = p.start;
-  start.assign(rings.size() + 1, 0);
-  for (std::size_t r = 0; r < rings.size(); ++r) start[r + 1] = start[r] + rings[r].size();
+  ringStarts(rings, start);
   std::vector<int>& succ = p.partner;  // the next vertex along the trace (flat)
   succ.resize(start.back());
   for (std::size_t r = 0; r < rings.size(); ++r) {
@@ -381,11 +378,11 @@ void orderAsTraced(const Rings& rings, ChainScratch& scratch) {
   const auto lowestOf = [&](int r) {
     return rings[std::size_t(r)][scratch.nesting[std::size_t(r)].lowest.index];
   };
-  const auto lowerEdge = [&](int r) {
+  const auto lowerEdge = [&](int r) {  // the clockwise one of the two: the out-edge at a left turn
     const std::vector<IPoint>& ring = rings[std::size_t(r)];
-    const std::size_t n = ring.size(), i = scratch.nesting[std::size_t(r)].lowest.index;
-    const IPoint in = minus(ring[(i + n - 1) % n], ring[i]), on = minus(ring[(i + 1) % n], ring[i]);
-    return crossSign(in, on) > 0 ? in : on;  // the clockwise one of the two
+    const LowestVertex lowest = scratch.nesting[std::size_t(r)].lowest;
+    const std::size_t n = ring.size(), i = lowest.index;
+    return minus(ring[lowest.ccw ? (i + 1) % n : (i + n - 1) % n], ring[i]);
   };
   std::sort(scratch.reached.begin(), scratch.reached.end(), [&](int a, int b) {
     const IPoint p = lowestOf(a), q = lowestOf(b);

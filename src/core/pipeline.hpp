@@ -62,6 +62,18 @@ void appendInputEdges(const Paths& paths, int operand, const Grid& grid,
 
 /// Closed rings of grid points, as snapRings() makes them.
 using Rings = std::vector<std::vector<IPoint>>;
+/// The bytes a set of rings holds, with the rings' own arrays.
+inline std::size_t bytesOf(const Rings& rings) {
+  std::size_t sum = rings.capacity() * sizeof(std::vector<IPoint>);
+  for (const std::vector<IPoint>& ring : rings) sum += ring.capacity() * sizeof(IPoint);
+  return sum;
+}
+/// Where each ring's first vertex lies when the rings' vertices are numbered one after the
+/// other (flat), and their total, last.
+inline void ringStarts(const Rings& rings, std::vector<std::size_t>& start) {
+  start.assign(rings.size() + 1, 0);
+  for (std::size_t r = 0; r < rings.size(); ++r) start[r + 1] = start[r] + rings[r].size();
+}
 
 /// Rings a stage writes again for each group of a call (the pinch and overlap stages' output):
 /// a ring dropped keeps its array in `spare`, and add() takes one from there, so the groups of a
@@ -82,19 +94,8 @@ class KeptRings {
   void clear() {
     for (; !rings.empty(); rings.pop_back()) spare_.push_back(std::move(rings.back()));
   }
-  /// Every ring emptied, `n` of them.
-  void reset(std::size_t n) {
-    clear();
-    while (rings.size() < n) add();
-  }
   /// The bytes held by the rings and the spare arrays.
-  [[nodiscard]] std::size_t bytes() const {
-    std::size_t sum = (rings.capacity() + spare_.capacity()) * sizeof(std::vector<IPoint>);
-    for (const Rings* set : {&rings, &spare_}) {
-      for (const std::vector<IPoint>& ring : *set) sum += ring.capacity() * sizeof(IPoint);
-    }
-    return sum;
-  }
+  [[nodiscard]] std::size_t bytes() const { return bytesOf(rings) + bytesOf(spare_); }
   void swap(KeptRings& o) noexcept {
     rings.swap(o.rings);
     spare_.swap(o.spare_);

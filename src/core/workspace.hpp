@@ -26,15 +26,10 @@ namespace roiclip::detail {
 /// calls. recycle() empties an array after use and keeps its capacity up to kKeptScratchBytes;
 /// a larger one is freed.
 constexpr std::size_t kKeptScratchBytes = std::size_t(64) << 20;
-/// The bytes an array holds; for rings, with their own arrays.
+/// The bytes an array holds (for rings, with their own arrays: bytesOf() in pipeline.hpp).
 template <class V>
 std::size_t bytesOf(const V& v) {
   return v.capacity() * sizeof(typename V::value_type);
-}
-inline std::size_t bytesOf(const Rings& rings) {
-  std::size_t sum = rings.capacity() * sizeof(rings[0]);
-  for (const std::vector<IPoint>& ring : rings) sum += ring.capacity() * sizeof(IPoint);
-  return sum;
 }
 inline std::size_t bytesOf(const KeptRings& rings) { return rings.bytes(); }
 template <class V>
@@ -217,7 +212,7 @@ struct OverlapScratch {
   KeptRings reduced;  ///< cancelOverlaps()'s output, when intersectOverlapping() calls it
   // The vertices, flat (each ring's first at `first`): successor, predecessor, the next visit of
   // the same point (circular, -1: visited once) and the point's first visit; the table of points.
-  std::vector<int> first;
+  std::vector<std::size_t> first;
   std::vector<IPoint> points;
   std::vector<int> next, prev, same, rep, sharedPoints, succ, stack, onStack;
   std::vector<std::uint64_t> table;
