@@ -57,7 +57,8 @@ class OutputFrame {
   double gridFactor_ = 1;
 };
 
-/// A ring as roiclip emits it: `pointAt(k)` for k = 0 .. n - 1 in output order, each point once
+/// A ring as roiclip emits it: `pointAt(k)` for k = 0 .. n - 1 in output order (asked in
+/// that order, once each, so a caller may step an index along instead), each point once
 /// per run of equal doubles (distinct exact points may round to the same double), the closing
 /// repeat of the first dropped. The caller drops a path of fewer than 3 points.
 template <class PointAt>

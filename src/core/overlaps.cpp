@@ -299,7 +299,7 @@ bool cancelOverlaps(const Rings& input, KeptRings& out, bool& touching, OverlapS
     ring.reserve(n);
     for (std::size_t i = 0; i < n; ++i) {
       const int e = s.stack[from + i];
-      const int before = s.stack[from + (i + n - 1) % n];
+      const int before = s.stack[from + (i == 0 ? n : i) - 1];
       s.onStack[std::size_t(s.rep[std::size_t(e)])] = -1;
       const IPoint v = s.points[std::size_t(e)];
       const IPoint din = minus(v, s.points[std::size_t(before)]);

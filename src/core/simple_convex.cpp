@@ -353,9 +353,12 @@ std::size_t lowestOf(const WeilerScratch& w, std::size_t t) {
 Path walkedPath(const WeilerScratch& w, std::size_t t, std::size_t lowest,
                 const OutputFrame& frame) {
   const std::size_t begin = w.ringStart[t], n = w.ringStart[t + 1] - begin;
-  const std::size_t first = lowest - begin;
-  return outputRing(n, [&](std::size_t k) {
-    const WalkPoint& a = w.points[begin + (first + n - 1 - k) % n];
+  // Output index k takes the point k + 1 steps back from the lowest (outputRing() asks k = 0,
+  // 1, ... in turn).
+  std::size_t i = lowest == begin ? begin + n - 1 : lowest - 1;
+  return outputRing(n, [&](std::size_t) {
+    const WalkPoint& a = w.points[i];
+    i = i == begin ? begin + n - 1 : i - 1;
     return a.crossing < 0 ? frame.point(a.p) : frame.point(w.crossings[std::size_t(a.crossing)].x);
   });
 }

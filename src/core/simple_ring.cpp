@@ -446,13 +446,17 @@ Path simpleRingPath(const std::vector<IPoint>& ring, LowestVertex lowest, bool h
   const std::size_t n = ring.size(), first = lowest.index;
   const bool forward = lowest.ccw != hole;  // the ring's order has the filled side on the left
   // Vertex t steps along the filled-left order from the smallest one; output index k takes
-  // t = n - 1 - k for an outer ring, and for a hole t = n - 2 - k, then n - 1 last.
-  const auto traced = [&](std::size_t t) {
-    return ring[forward ? (first + t) % n : (first + n - t % n) % n];
+  // t = n - 1 - k for an outer ring, and for a hole t = n - 2 - k, then n - 1 last. outputRing()
+  // asks k = 0, 1, ... in turn: each t is a step back from the last, no division a vertex.
+  const auto indexOf = [&](std::size_t t) {
+    return forward ? (first + t) % n : (first + n - t) % n;
   };
+  std::size_t i = indexOf(hole ? n - 2 : n - 1);
   return outputRing(n, [&](std::size_t k) {
-    const std::size_t t = !hole ? n - 1 - k : k + 1 < n ? n - 2 - k : n - 1;
-    return frame.point(traced(t));
+    if (hole && k + 1 == n) return frame.point(ring[indexOf(n - 1)]);
+    const IPoint p = ring[i];
+    i = forward ? (i == 0 ? n - 1 : i - 1) : (i + 1 == n ? 0 : i + 1);
+    return frame.point(p);
   });
 }
 
