@@ -27,7 +27,7 @@
 //
 // Simple here means: the ring's vertices are distinct, consecutive edges meet only at their
 // shared vertex and are not collinear (a straight-on vertex or a spike, which turnsOnce(), asked
-// first, rejects), and no other two edges meet at all.
+// first, rejects; snapped rings have none), and no other two edges meet at all.
 #include <algorithm>
 #include <limits>
 #include <utility>
@@ -465,10 +465,10 @@ bool ringIsSimple(const std::vector<IPoint>& ring, ChainScratch& scratch, bool t
   return (turnsChecked || turnsOnce(ring)) && ChainSweep(&ring, 1, scratch, nullptr).run();
 }
 
-bool ringsAreSimple(const Rings& rings, ChainScratch& scratch) {
+bool ringsAreSimple(const Rings& rings, ChainScratch& scratch, bool merged) {
   scratch.touched = false;
   for (const std::vector<IPoint>& ring : rings) {
-    if (!turnsOnce(ring)) return false;
+    if (merged ? ring.size() < 3 : !turnsOnce(ring)) return false;
   }
   return ChainSweep(rings.data(), rings.size(), scratch, &scratch.below).run();
 }

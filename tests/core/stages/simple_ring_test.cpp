@@ -117,11 +117,14 @@ void expectRingVerdicts(Make make, int trials, int fewest) {
 }
 
 // The same for sets of rings from `make`: ringsAreSimple() against bruteForceSetSimple(), more
-// than `fewestSimple` sets simple and at least 1,000 not.
+// than `fewestSimple` sets simple and at least 1,000 not. Each set is also snapped (its
+// straight-on and spike vertices merged, as intersectRings() gets its rings) and asked without
+// the rotation index (`merged`): against brute force on the snapped set, with both verdicts
+// more than `fewestSimple` / 4 times.
 template <class Make>
 void expectSetVerdicts(Make make, int trials, int fewestSimple) {
   detail::ChainScratch scratch;
-  int simple = 0, total = 0;
+  int simple = 0, total = 0, mergedSimple = 0, mergedTotal = 0;
   for (int trial = 0; trial < trials; ++trial) {
     const std::vector<Ring> set = make();
     if (std::any_of(set.begin(), set.end(), [](const Ring& r) { return r.size() < 3; })) continue;
@@ -129,9 +132,23 @@ void expectSetVerdicts(Make make, int trials, int fewestSimple) {
     ASSERT_EQ(detail::ringsAreSimple(set, scratch), expected) << "trial " << trial;
     simple += expected ? 1 : 0;
     ++total;
+    Paths paths;
+    for (const Ring& r : set) {
+      Path& path = paths.emplace_back();
+      for (const IPoint& q : r) path.emplace_back(double(q.x), double(q.y));
+    }
+    const detail::Rings merged = detail::snapRings(paths, 0, Grid::fixed(1.0));
+    if (merged.size() != set.size()) continue;  // a ring merged into a line
+    const bool mergedExpected = bruteForceSetSimple(merged);
+    ASSERT_EQ(detail::ringsAreSimple(merged, scratch, /*merged=*/true), mergedExpected)
+        << "trial " << trial << ", snapped";
+    mergedSimple += mergedExpected ? 1 : 0;
+    ++mergedTotal;
   }
   EXPECT_GT(simple, fewestSimple);
   EXPECT_LT(simple, total - 1000);
+  EXPECT_GT(mergedSimple, fewestSimple / 4);
+  EXPECT_LT(mergedSimple, mergedTotal - fewestSimple / 4);
 }
 
 // A random ring of up to `n` points on a 6 x 6 grid, consecutive repeats dropped.
