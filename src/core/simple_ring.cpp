@@ -452,12 +452,15 @@ Path simpleRingPath(const std::vector<IPoint>& ring, LowestVertex lowest, bool h
     return forward ? (first + t) % n : (first + n - t) % n;
   };
   std::size_t i = indexOf(hole ? n - 2 : n - 1);
-  return outputRing(n, [&](std::size_t k) {
-    if (hole && k + 1 == n) return frame.point(ring[indexOf(n - 1)]);
-    const IPoint p = ring[i];
-    i = forward ? (i == 0 ? n - 1 : i - 1) : (i + 1 == n ? 0 : i + 1);
-    return frame.point(p);
-  });
+  return outputRing(
+      n,
+      [&](std::size_t k) {
+        if (hole && k + 1 == n) return frame.point(ring[indexOf(n - 1)]);
+        const IPoint p = ring[i];
+        i = forward ? (i == 0 ? n - 1 : i - 1) : (i + 1 == n ? 0 : i + 1);
+        return frame.point(p);
+      },
+      frame.gridPointsExact());  // a simple ring's vertices are distinct
 }
 
 bool ringIsSimple(const std::vector<IPoint>& ring, ChainScratch& scratch, bool turnsChecked) {
