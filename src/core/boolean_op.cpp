@@ -37,10 +37,42 @@ PolygonSet resolve(const BooleanSpec& spec, const Grid& grid, Workspace& ws,
   return result;
 }
 
+// What the grouping knew of the vertices of `rings` (`known`, null: nothing), for the rings
+// separatePinches() left in `p`: the same when it split none, else each vertex's masks where the
+// split moved it (PinchedRings::moved; p.start holds the split rings' flat offsets). A split ring
+// takes its vertices from one ring.
+const KnownSides* knownAfterPinches(const Rings& rings, const KnownSides* known, PinchedRings& p) {
+  if (known == nullptr || p.rings == &rings) return known;
+  p.known.assign(p.rings->size(), KnownSides{});
+  p.knownLeft.resize(p.start.back());
+  p.knownOnLine.resize(p.start.back());
+  std::size_t flat = 0;  // the flat index of ring r's first vertex
+  for (std::size_t r = 0; r < rings.size(); flat += rings[r++].size()) {
+    const KnownSides& from = known[r];
+    if (!from.inside && from.left == nullptr) continue;
+    for (std::size_t i = 0; i < rings[r].size(); ++i) {
+      const PinchedRings::Visit to = p.moved[flat + i];
+      KnownSides& k = p.known[std::size_t(to.ring)];
+      if (from.inside) {
+        k.inside = true;
+        continue;
+      }
+      const std::size_t first = p.start[std::size_t(to.ring)];
+      k.left = p.knownLeft.data() + first;
+      k.onLine = p.knownOnLine.data() + first;
+      p.knownLeft[first + std::size_t(to.index)] = from.left[i];
+      p.knownOnLine[first + std::size_t(to.index)] = from.onLine[i];
+    }
+  }
+  return p.known.data();
+}
+
 // The sweep-free paths for rings that touch only at vertices, as separatePinches() left them in
-// ws.pinched: into `out`, or false. `inside`: ringsInsideConvex(rings).
+// ws.pinched: into `out`, or false. `inside`: ringsInsideConvex(rings). `known`, when not null:
+// what the grouping knew of the vertices of `rings`, the rings given to the stage.
 bool intersectPinched(FillRule rule, const SnappedOperand& convex, const Grid& grid, Workspace& ws,
-                      bool inside, PolygonSet& out) {
+                      bool inside, PolygonSet& out, const Rings& rings,
+                      const KnownSides* known = nullptr) {
   PinchedRings& pinched = ws.pinched;
   if (!ringsAreSimple(pinched.separated.rings, ws.chains)) return false;
   if (inside) return pinchedRingsRegion(pinched, rule, ws.chains, grid, out);
@@ -57,7 +89,8 @@ bool intersectPinched(FillRule rule, const SnappedOperand& convex, const Grid& g
     touching.push_back(pinch);
   }
   return intersectSimpleRingsConvex(*pinched.rings, rule, c, convex.convex, grid, ws.chains,
-                                    ws.weiler, out, nullptr, &touching);
+                                    ws.weiler, out, knownAfterPinches(rings, known, pinched),
+                                    &touching);
 }
 
 // Whether a ring has an edge along a side's line of C (m sides) and a vertex outside C, as
@@ -87,7 +120,7 @@ bool intersectOverlapping(const Rings& rings, FillRule rule, const SnappedOperan
   if (!cancelOverlaps(rings, ws.overlaps.reduced, touching, ws.overlaps)) return false;
   if (touching) {
     return separatePinches(reduced, ws.pinched) == Pinches::separated &&
-           intersectPinched(rule, convex, grid, ws, inside, out);
+           intersectPinched(rule, convex, grid, ws, inside, out, reduced);
   }
   if (!ringsAreSimple(reduced, ws.chains)) return false;
   if (inside) {
@@ -149,7 +182,7 @@ PolygonSet intersectRings(const Rings& rings, FillRule rule, const SnappedOperan
                                 // general path's
     const Pinches pinches = alongSide ? Pinches::refused : separatePinches(rings, ws.pinched);
     if ((pinches == Pinches::separated &&
-         intersectPinched(rule, convex, grid, ws, inside, direct)) ||
+         intersectPinched(rule, convex, grid, ws, inside, direct, rings, known)) ||
         (pinches == Pinches::overlapping && rings.size() > 1 &&
          intersectOverlapping(rings, rule, convex, grid, ws, inside, direct))) {
       return direct;

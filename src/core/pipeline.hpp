@@ -524,8 +524,15 @@ struct PinchedRings {
   std::vector<int> partner, stack, position;
   std::vector<std::size_t> start;
   std::vector<char> selfPinched, cut;
+  /// What the grouping knew of the vertices, moved with them into the split rings
+  /// (boolean_op.cpp): per split ring, and each vertex's masks flat by `start`.
+  std::vector<KnownSides> known;
+  std::vector<unsigned> knownLeft, knownOnLine;
   template <class F>
   void forEach(F f) {
+    f(known);
+    f(knownLeft);
+    f(knownOnLine);
     f(split);
     f(separated);
     f(pinches);
