@@ -248,9 +248,12 @@ PolygonSet mergeGroups(std::vector<PolygonSet>& parts) {
 // Intersection with one convex ring. Many contours (all of an image's) are split first into
 // groups that do not touch within the convex ring, each taking its own path: the sweep then runs
 // only over the groups that need it.
+// `lend`: other.rings itself when the caller lets the groups borrow its rings (moved out and
+// back; when the call throws, the group's rings are lost with it), null when `other` may be
+// shared (a prepared region): then each group's rings are copied.
 PolygonSet intersectConvexRing(const SnappedOperand& other, const SnappedOperand& convex,
                                const Grid& grid, const Limits& limits, Workspace& ws,
-                               BoxPlace otherPlace) {
+                               BoxPlace otherPlace, Rings* lend) {
   if (!isFilled(convex.rule, convex.convex)) return {};
   // One simple contour strictly inside the ROI (its box is): the region it fills, as it is.
   if (otherPlace == BoxPlace::Inside && other.rings.size() == 1 && other.rings[0].size() >= 3 &&
@@ -265,18 +268,26 @@ PolygonSet intersectConvexRing(const SnappedOperand& other, const SnappedOperand
   if (grouped && (groups.count() > 1 || groups.apart > 0)) {
     std::vector<PolygonSet> parts;
     parts.reserve(groups.count());
-    KeptRings group;  // a group's rings, copied; their arrays serve the next groups
+    Rings group;
     std::vector<KnownSides> known;
     for (std::size_t g = 0; g < groups.count(); ++g) {
+      const auto first = groups.rings.begin() + std::ptrdiff_t(groups.groupStart[g]);
+      const auto last = groups.rings.begin() + std::ptrdiff_t(groups.groupStart[g + 1]);
       group.clear();
       known.clear();
-      for (std::size_t k = groups.groupStart[g]; k < groups.groupStart[g + 1]; ++k) {
-        const std::vector<IPoint>& ring = other.rings[std::size_t(groups.rings[k])];
-        group.add().assign(ring.begin(), ring.end());
-        known.push_back(groups.sidesOf(std::size_t(groups.rings[k])));
+      for (auto r = first; r != last; ++r) {
+        if (lend != nullptr) {
+          group.push_back(std::move((*lend)[std::size_t(*r)]));
+        } else {
+          group.push_back(other.rings[std::size_t(*r)]);
+        }
+        known.push_back(groups.sidesOf(std::size_t(*r)));
       }
-      parts.push_back(intersectRings(group.rings, other.rule, convex, grid, budget, ws,
+      parts.push_back(intersectRings(group, other.rule, convex, grid, budget, ws,
                                      groups.groupInClosed(g), known.data()));
+      for (auto r = first; lend != nullptr && r != last; ++r) {
+        (*lend)[std::size_t(*r)] = std::move(group[std::size_t(r - first)]);
+      }
     }
     return mergeGroups(parts);
   }
@@ -326,9 +337,11 @@ PolygonSet clipSnapped(ClipOp op, SnappedOperand& subject, const SnappedOperand&
                        BoxPlace subjectPlace) {
   if (op == ClipOp::Intersection) {
     // The region-of-interest case: a convex operand takes the linear pre-clip path.
-    if (clip.convex != 0) return intersectConvexRing(subject, clip, grid, limits, ws, subjectPlace);
-    if (subject.convex != 0) {
-      return intersectConvexRing(clip, subject, grid, limits, ws, BoxPlace::Unknown);
+    if (clip.convex != 0) {
+      return intersectConvexRing(subject, clip, grid, limits, ws, subjectPlace, &subject.rings);
+    }
+    if (subject.convex != 0) {  // the clip may be shared (a prepared region)
+      return intersectConvexRing(clip, subject, grid, limits, ws, BoxPlace::Unknown, nullptr);
     }
   }
   BooleanSpec spec;

@@ -172,5 +172,39 @@ TEST(PreparedRegion, ReleaseMemoryMovesAndThreadsKeepItsResults) {
   }
 }
 
+// A region of many contours apart and a convex subject: the intersection groups the region's
+// rings against the subject, copying each group's rings (a prepared region is shared; only the
+// call's own subject lends its rings). Call after call and from threads at once, the result is
+// the free function's, and it holds every contour the subject meets.
+TEST(PreparedRegion, ManyContoursAgainstAConvexSubjectStayWhole) {
+  std::mt19937 rng(5150);
+  Paths contours;
+  for (int gy = 0; gy < 5; ++gy) {
+    for (int gx = 0; gx < 5; ++gx) {
+      Path ring = testing::randomPolygon(rng, 6 + int(rng() % 6), 28);
+      for (Point& q : ring) q += Point(40.0 * gx, 40.0 * gy);
+      contours.push_back(ring);
+    }
+  }
+  const PreparedRegion region(contours, FillRule::NonZero);
+  ASSERT_FALSE(region.convex());
+  const PolygonSet want =
+      clip(ClipOp::Intersection, kQuad, contours, FillRule::EvenOdd, FillRule::NonZero);
+  EXPECT_GT(want.polygons.size(), 10u);
+  for (int call = 0; call < 3; ++call) {
+    testing::expectSameSet(region.clip(ClipOp::Intersection, kQuad), want,
+                           "call " + std::to_string(call));
+  }
+  std::vector<PolygonSet> got(4);
+  std::vector<std::thread> threads;
+  for (std::size_t t = 0; t < got.size(); ++t) {
+    threads.emplace_back([&, t] {
+      for (int round = 0; round < 5; ++round) got[t] = region.clip(ClipOp::Intersection, kQuad);
+    });
+  }
+  for (std::thread& th : threads) th.join();
+  for (const PolygonSet& g : got) testing::expectSameSet(g, want, "threads");
+}
+
 }  // namespace
 }  // namespace roiclip
