@@ -208,10 +208,14 @@ class ChainSweep {
         const int u = direction(points, n, i);  // a run's first edge is not vertical
         const int k = int(chains.size());
         int j = after(n, i, 1), edges = 1;
+        // On along edges that keep x or move it the run's way (u); j is the run's last vertex.
+        std::int64_t xj = points[j].x;
         for (++done; done < n; ++done, ++edges) {
-          const int d = direction(points, n, j);
-          if (d != 0 && d != u) break;
-          j = after(n, j, 1);
+          const int next = j + 1 == n ? 0 : j + 1;
+          const std::int64_t x = points[next].x;
+          if (u > 0 ? x < xj : x > xj) break;
+          j = next;
+          xj = x;
         }
         const bool last = done >= n;
         ChainNode& chain = chains.emplace_back();
