@@ -284,16 +284,19 @@ Pinches separatePinches(const Rings& rings, PinchedRings& out) {
     std::vector<IPoint>& separated = out.separated.add();
     const std::size_t n = ring.size();
     separated.reserve(n + out.pinches.size());  // one more point per cut vertex
-    for (std::size_t i = 0; i < n; ++i) {
+    // The runs between cut vertices as they are (most rings have no cut vertex).
+    const char* const cutOf = cut.data() + start[r];
+    for (std::size_t from = 0; from < n;) {
+      const std::size_t i = std::size_t(std::find(cutOf + from, cutOf + n, 1) - cutOf);
+      separated.insert(separated.end(), ring.begin() + std::ptrdiff_t(from),
+                       ring.begin() + std::ptrdiff_t(i));
+      if (i == n) break;
       const IPoint v = ring[i];
-      if (cut[start[r] + i] == 0) {
-        separated.push_back(v);
-        continue;
-      }
       const IPoint in = primitiveStep(minus(ring[(i + n - 1) % n], v));
       const IPoint on = primitiveStep(minus(ring[(i + 1) % n], v));
       separated.push_back({v.x + in.x, v.y + in.y});
       separated.push_back({v.x + on.x, v.y + on.y});
+      from = i + 1;
     }
   }
   return Pinches::separated;
