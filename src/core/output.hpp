@@ -62,17 +62,11 @@ class OutputFrame {
 /// A ring as roiclip emits it: `pointAt(k)` for k = 0 .. n - 1 in output order (asked in
 /// that order, once each, so a caller may step an index along instead), each point once
 /// per run of equal doubles (distinct exact points may round to the same double), the closing
-/// repeat of the first dropped. The caller drops a path of fewer than 3 points. `distinct`: the
-/// n points are known to be distinct doubles (distinct grid points, gridPointsExact()), and are
-/// taken without comparing each with the last.
+/// repeat of the first dropped. The caller drops a path of fewer than 3 points.
 template <class PointAt>
-Path outputRing(std::size_t n, PointAt pointAt, bool distinct = false) {
+Path outputRing(std::size_t n, PointAt pointAt) {
   Path path;
   path.reserve(n);
-  if (distinct) {
-    for (std::size_t k = 0; k < n; ++k) path.push_back(pointAt(k));
-    return path;
-  }
   for (std::size_t k = 0; k < n; ++k) {
     const Point p = pointAt(k);
     if (path.empty() || p != path.back()) path.push_back(p);

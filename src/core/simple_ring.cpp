@@ -450,21 +450,31 @@ Path simpleRingPath(const std::vector<IPoint>& ring, LowestVertex lowest, bool h
   const std::size_t n = ring.size(), first = lowest.index;
   const bool forward = lowest.ccw != hole;  // the ring's order has the filled side on the left
   // Vertex t steps along the filled-left order from the smallest one; output index k takes
-  // t = n - 1 - k for an outer ring, and for a hole t = n - 2 - k, then n - 1 last. outputRing()
-  // asks k = 0, 1, ... in turn: each t is a step back from the last, no division a vertex.
-  const auto indexOf = [&](std::size_t t) {
-    return forward ? (first + t) % n : (first + n - t) % n;
-  };
-  std::size_t i = indexOf(hole ? n - 2 : n - 1);
-  return outputRing(
-      n,
-      [&](std::size_t k) {
-        if (hole && k + 1 == n) return frame.point(ring[indexOf(n - 1)]);
-        const IPoint p = ring[i];
-        i = forward ? (i == 0 ? n - 1 : i - 1) : (i + 1 == n ? 0 : i + 1);
-        return frame.point(p);
-      },
-      frame.gridPointsExact());  // a simple ring's vertices are distinct
+  // t = n - 1 - k for an outer ring, and for a hole t = n - 2 - k, then n - 1 last: the ring
+  // rotated, from one step (outer) or two (hole) before the smallest vertex in the filled-left
+  // order, backwards through that order (down the stored order when `forward`).
+  const std::size_t back = hole ? 2 : 1;
+  const std::size_t s = forward ? (first + n - back) % n : (first + back) % n;
+  if (frame.gridPointsExact()) {  // distinct vertices give distinct doubles: each is taken
+    Path path;
+    path.reserve(n);
+    const auto put = [&](std::size_t i) { path.push_back(frame.point(ring[i])); };
+    if (forward) {
+      for (std::size_t i = s + 1; i-- > 0;) put(i);
+      for (std::size_t i = n; i-- > s + 1;) put(i);
+    } else {
+      for (std::size_t i = s; i < n; ++i) put(i);
+      for (std::size_t i = 0; i < s; ++i) put(i);
+    }
+    return path;
+  }
+  // outputRing() asks k = 0, 1, ... in turn: each index is a step on from the last.
+  std::size_t i = s;
+  return outputRing(n, [&](std::size_t) {
+    const IPoint p = ring[i];
+    i = forward ? (i == 0 ? n - 1 : i - 1) : (i + 1 == n ? 0 : i + 1);
+    return frame.point(p);
+  });
 }
 
 bool ringIsSimple(const std::vector<IPoint>& ring, ChainScratch& scratch, bool turnsChecked) {
