@@ -157,13 +157,23 @@ void Box::add(const Paths& paths) {
 #if defined(__SSE2__)
   __m128d low = _mm_loadu_pd(lo), high = _mm_loadu_pd(hi), off = _mm_setzero_pd();
   const __m128d round = _mm_set1_pd(kRound);
+  const auto add = [&](const Point& p) {
+    const __m128d v = _mm_loadu_pd(&p.x);
+    low = _mm_min_pd(v, low);  // v < low ? v : low, lane by lane
+    high = _mm_max_pd(v, high);
+    off = _mm_or_pd(off, _mm_sub_pd(v, _mm_sub_pd(_mm_add_pd(v, round), round)));
+  };
   for (const Path& path : paths) {
-    for (const Point& p : path) {
-      const __m128d v = _mm_loadu_pd(&p.x);
-      low = _mm_min_pd(v, low);  // v < low ? v : low, lane by lane
-      high = _mm_max_pd(v, high);
-      off = _mm_or_pd(off, _mm_sub_pd(v, _mm_sub_pd(_mm_add_pd(v, round), round)));
+    const Point* p = path.data();
+    const std::size_t n = path.size();
+    std::size_t i = 0;
+    for (; i + 4 <= n; i += 4) {  // four points a step: fewer loop tests
+      add(p[i]);
+      add(p[i + 1]);
+      add(p[i + 2]);
+      add(p[i + 3]);
     }
+    for (; i < n; ++i) add(p[i]);
   }
   _mm_storeu_pd(lo, low);
   _mm_storeu_pd(hi, high);
