@@ -41,13 +41,14 @@ bool segmentMeetsConvex(IPoint p, IPoint q, unsigned outsideP, unsigned outsideQ
 // Winding number of a ring around a grid point that is not on it.
 int windingAround(const std::vector<IPoint>& ring, IPoint p) {
   int winding = 0;
-  for (std::size_t k = 0, n = ring.size(); k < n; ++k) {
-    const IPoint a = ring[k], b = ring[(k + 1) % n];
+  IPoint a = ring.back();  // each edge a -> b, from the closing one
+  for (const IPoint b : ring) {
     if (a.y <= p.y) {
       if (b.y > p.y && orientInGrid(a, b, p) > 0) ++winding;  // upwards, p on its left
     } else if (b.y <= p.y && orientInGrid(a, b, p) < 0) {
       --winding;  // downwards, p on its right
     }
+    a = b;
   }
   return winding;
 }
