@@ -785,7 +785,9 @@ void giveBackRings(SnappedOperand& snapped, int operand, Workspace& workspace);
 
 /// clip() on snapped operands (boolean_op.cpp): the convex fast path for an intersection with a
 /// convex operand, else the general path. On the general path the subject's rings are freed
-/// once read. `subjectPlace`: where the subject lies relative to a convex clip (placeBox()).
+/// once read; on the convex path its groups borrow them (moved out and back: unchanged unless
+/// the call throws). `subjectPlace`: where the subject lies relative to a convex clip
+/// (placeBox()).
 PolygonSet clipSnapped(ClipOp op, SnappedOperand& subject, const SnappedOperand& clip,
                        const Grid& grid, const Limits& limits, Workspace& workspace,
                        BoxPlace subjectPlace = BoxPlace::Unknown);
