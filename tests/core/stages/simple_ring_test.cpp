@@ -93,6 +93,12 @@ bool chainSweepSimple(const Ring& r) {
   return detail::ringIsSimple(r, scratch);
 }
 
+Path toPath(const Ring& r) {
+  Path p;
+  for (const IPoint& q : r) p.emplace_back(double(q.x), double(q.y));
+  return p;
+}
+
 // The verdict on `trials` rings from `make` (rings under three vertices are skipped) against
 // brute force, each ring also reversed; a simple ring turns once (Hopf: necessary). Both
 // verdicts must occur: more than total / `fewest` rings simple, at least 1,000 not.
@@ -133,10 +139,7 @@ void expectSetVerdicts(Make make, int trials, int fewestSimple) {
     simple += expected ? 1 : 0;
     ++total;
     Paths paths;
-    for (const Ring& r : set) {
-      Path& path = paths.emplace_back();
-      for (const IPoint& q : r) path.emplace_back(double(q.x), double(q.y));
-    }
+    for (const Ring& r : set) paths.push_back(toPath(r));
     const detail::Rings merged = detail::snapRings(paths, 0, Grid::fixed(1.0));
     if (merged.size() != set.size()) continue;  // a ring merged into a line
     const bool mergedExpected = bruteForceSetSimple(merged);
@@ -162,11 +165,6 @@ Ring smallGridRing(std::mt19937& rng, int n) {
   return r;
 }
 
-Path toPath(const Ring& r) {
-  Path p;
-  for (const IPoint& q : r) p.emplace_back(double(q.x), double(q.y));
-  return p;
-}
 Ring toRing(const Path& p) {
   Ring r;
   for (const Point& q : p) r.push_back({std::int64_t(q.x), std::int64_t(q.y)});
