@@ -275,6 +275,15 @@ class Sweep {
     placeFrom(hole, last);
   }
   [[nodiscard]] const SweepEvent& top() const { return queue_.front(); }
+  // Whether a queued event other than the first lies at p, the first's point: one would be
+  // a child of the root (each event comes no earlier than its parent).
+  [[nodiscard]] bool secondEventAt(const XPoint& p) const {
+    const auto at = [&](std::size_t i) {
+      return i < queue_.size() && compareCachedInBox(queue_[i].fx, p.fx) == 0 &&
+             equalInBox(eventPoint(queue_[i], eventPoints_), p);
+    };
+    return at(1) || at(2);
+  }
   [[nodiscard]] XPoint topPoint() const { return eventPoint(queue_.front(), eventPoints_); }
   // The earliest event is at p (which lies within the grid's range, as every sweep point).
   [[nodiscard]] bool topAt(const XPoint& p) const {
@@ -347,6 +356,7 @@ class Sweep {
   void visit(const XPoint& p) {
     vertex_ = -1;
     crossingHere_ = {-1, -1};
+    if (pointKey_ != kNoStartKey ? chainGoesOn(p) : twoPiecesCross(p)) return;
     starting_.clear();
     const auto [locator, known] = takeEventsAt(p);
     const auto [lo, hi] = piecesThrough(p, locator, known);
@@ -362,6 +372,94 @@ class Sweep {
       checkCrossing(below, starting_.front(), p);
       checkCrossing(starting_.back(), above, p);
     }
+  }
+
+  // The two most common event points, each without the lists and loops of the general visit:
+  // a contour's chain going on (one piece ends at p, the next edge starts there) and two pieces
+  // crossing. Both need that no other event lies at p and no other piece passes through it;
+  // otherwise they return false before changing anything, and the general visit takes p.
+
+  // Whether the active piece in node n passes through p.
+  [[nodiscard]] bool passesThrough(const StatusNode* n, const XPoint& p) const {
+    const SweepPiece& a = pieces_[std::size_t(n->piece)];
+    return orientInBox(a.lineA(), a.lineB(), p) == 0;
+  }
+  // Whether no piece next to the run of nodes lo..hi (both included) passes through p.
+  [[nodiscard]] bool aloneAt(const StatusNode* lo, const StatusNode* hi, const XPoint& p) const {
+    return (lo->below == nullptr || !passesThrough(lo->below, p)) &&
+           (hi->above == nullptr || !passesThrough(hi->above, p));
+  }
+
+  // p holds exactly two starts: the right end of an active closed piece and the left end of
+  // a closed piece, and no queued event. The new piece takes the old one's node: nothing else
+  // passes through p, so it lies where the old one did.
+  bool chainGoesOn(const XPoint& p) {
+    const std::size_t n = starts_.size();
+    if (cursor_ + 1 >= n || starts_[cursor_ + 1].key != pointKey_ ||
+        (cursor_ + 2 < n && starts_[cursor_ + 2].key == pointKey_)) {
+      return false;
+    }
+    const SweepStart& s0 = starts_[cursor_];
+    const SweepStart& s1 = starts_[cursor_ + 1];
+    if (s0.end == s1.end) return false;
+    const int ending = s0.end ? s0.piece : s1.piece;
+    const int next = s0.end ? s1.piece : s0.piece;
+    SweepPiece& a = pieces_[std::size_t(ending)];
+    SweepPiece& b = pieces_[std::size_t(next)];
+    StatusNode* node = a.node;
+    if (node == nullptr || a.open || b.open || cancelled(b)) return false;
+    if (!queue_.empty() && topAt(p)) return false;
+    if (!aloneAt(node, node, p)) return false;
+    cursor_ += 2;
+    closeAt(a, p);
+    const int below = node->below != nullptr ? node->below->piece : -1;
+    Windings wind = below >= 0 ? pieces_[std::size_t(below)].windAbove() : Windings{};
+    int resultBelow = below >= 0 ? pieces_[std::size_t(below)].nearestResult() : -1;
+    labelStarting(b, wind, resultBelow, p);
+    node->piece = next;
+    b.node = node;
+    checkCrossing(below, next, p);
+    checkCrossing(next, node->above != nullptr ? node->above->piece : -1, p);
+    return true;
+  }
+
+  // The queue's first event is a crossing of two adjacent closed pieces, the only event at p.
+  // The crossing lies strictly inside both (checkCrossing() queues no other), so both go on
+  // past p, swapped: each keeps its node's place with the other's piece.
+  bool twoPiecesCross(const XPoint& p) {
+    const SweepEvent& ev = top();
+    if (ev.piece >= 0 || ev.through < 0) return false;
+    const int first = ev.through, second = ev.other;
+    SweepPiece& pf = pieces_[std::size_t(first)];
+    SweepPiece& ps = pieces_[std::size_t(second)];
+    StatusNode *lo = pf.node, *hi = ps.node;
+    if (lo == nullptr || hi == nullptr || pf.open || ps.open) return false;
+    if (lo->above != hi) {
+      std::swap(lo, hi);
+      if (lo->above != hi) return false;
+    }
+    if (secondEventAt(p) || !aloneAt(lo, hi, p)) return false;
+    pop();
+    crossingHere_ = {first, second};
+    const int lower = lo->piece, upper = hi->piece;
+    SweepPiece& a = pieces_[std::size_t(lower)];
+    SweepPiece& b = pieces_[std::size_t(upper)];
+    closeAt(a, p);
+    closeAt(b, p);
+    a.left = p;
+    b.left = p;
+    const int below = lo->below != nullptr ? lo->below->piece : -1;
+    Windings wind = below >= 0 ? pieces_[std::size_t(below)].windAbove() : Windings{};
+    int resultBelow = below >= 0 ? pieces_[std::size_t(below)].nearestResult() : -1;
+    labelStarting(b, wind, resultBelow, p);
+    labelStarting(a, wind, resultBelow, p);
+    lo->piece = upper;
+    b.node = lo;
+    hi->piece = lower;
+    a.node = hi;
+    checkCrossing(below, upper, p);
+    checkCrossing(lower, hi->above != nullptr ? hi->above->piece : -1, p);
+    return true;
   }
 
   // Takes every start and queued event at p: pieces starting at p go to starting_. Returns a
@@ -429,14 +527,43 @@ class Sweep {
     for (const StatusNode* n = lo; n != hi; n = n->above) through_.push_back(n->piece);
     for (int i : through_) {
       SweepPiece& a = pieces_[i];
-      a.node = nullptr;
-      if (a.slot >= 0) out_.pieces[a.slot].right = vertexHere(p);
+      closeAt(a, p);
       if (a.open) out_.openPieces.push_back({i, a.left, p, a.place});
       if (!endsAt(a, p)) {
         a.left = p;
         starting_.push_back(i);
       }
     }
+  }
+
+  // Piece a leaves the status at p: its result piece, if any, ends there.
+  void closeAt(SweepPiece& a, const XPoint& p) {
+    a.node = nullptr;
+    if (a.slot >= 0) out_.pieces[a.slot].right = vertexHere(p);
+  }
+
+  // Labels piece a, starting at p just above the winding numbers `wind` and the result piece
+  // `resultBelow`, keeps it when it bounds the result (stage 2, classify), and moves both to
+  // just above it.
+  void labelStarting(SweepPiece& a, Windings& wind, int& resultBelow, const XPoint& p) {
+    a.windBelow = compact(wind);
+    a.resultBelow = resultBelow;
+    a.slot = -1;
+    const Side side = a.open || !spec_.keepBoundary
+                          ? Side::None
+                          : classifyPiece(wind, widen(a.contribution), spec_);
+    if (side != Side::None) {
+      a.slot = int(out_.pieces.size());
+      EdgePiece kept;
+      static_cast<GridSegment&>(kept) = a;
+      if (spec_.recordWindings) out_.windings.push_back(a);
+      kept.left = vertexHere(p);
+      kept.below = resultBelow;
+      out_.pieces.push_back(kept);
+      out_.sides.push_back(side);
+    }
+    wind = a.windAbove();
+    resultBelow = a.nearestResult();
   }
 
   // Labels the pieces starting at p bottom to top with the winding numbers from the piece
@@ -452,9 +579,6 @@ class Sweep {
     StatusNode* n = lo;  // the first node from lo up to hi not yet holding a starting piece
     for (int i : starting_) {
       SweepPiece& a = pieces_[i];
-      a.windBelow = compact(wind);
-      a.resultBelow = resultBelow;
-      a.slot = -1;
       if (a.open) {
         // An open piece coincident with the closed piece just below it lies on that piece:
         // the region's winding numbers on its two sides are the ones around that piece.
@@ -465,21 +589,7 @@ class Sweep {
         closedRun = i;
         closedRunBelow = wind;
       }
-      const Side side = a.open || !spec_.keepBoundary
-                            ? Side::None
-                            : classifyPiece(wind, widen(a.contribution), spec_);
-      if (side != Side::None) {
-        a.slot = int(out_.pieces.size());
-        EdgePiece kept;
-        static_cast<GridSegment&>(kept) = a;
-        if (spec_.recordWindings) out_.windings.push_back(a);
-        kept.left = vertexHere(p);
-        kept.below = resultBelow;
-        out_.pieces.push_back(kept);
-        out_.sides.push_back(side);
-      }
-      wind = a.windAbove();
-      resultBelow = a.nearestResult();
+      labelStarting(a, wind, resultBelow, p);
       if (n != hi) {  // same position in the order, see above
         n->piece = i;
         a.node = n;
@@ -507,6 +617,12 @@ class Sweep {
     return n;
   }
 
+  // A closed piece whose contributions cancel: it changes no winding number. One flag, not three
+  // branches: whether a contribution is zero is data, not a pattern.
+  static bool cancelled(const SweepPiece& a) {
+    return (!a.open & (a.contribution[0] == 0) & (a.contribution[1] == 0)) != 0;
+  }
+
   // Sort the pieces in starting_ by direction; merge runs of coincident closed ones into the
   // shortest and re-start the rest where it ends. Closed pieces whose contributions cancel are
   // dropped: they change no winding number (a spike out and back along itself). Open pieces are
@@ -519,11 +635,7 @@ class Sweep {
       const int c = compareInBox(rightOf(pieces_[a]), rightOf(pieces_[b]));
       return c != 0 ? c < 0 : a < b;
     };
-    const auto cancels = [this](int i) {
-      const SweepPiece& a = pieces_[i];
-      // One flag, not three branches: whether a contribution is zero is data, not a pattern.
-      return (!a.open & (a.contribution[0] == 0) & (a.contribution[1] == 0)) != 0;
-    };
+    const auto cancels = [this](int i) { return cancelled(pieces_[i]); };
     // Mostly one piece (a chain going on) or two (a crossing): no sort call for those, and two
     // in different directions (a crossing) have nothing to merge.
     if (starting_.size() == 2) {
