@@ -545,7 +545,8 @@ class Sweep {
   // Labels piece a, starting at p just above the winding numbers `wind` and the result piece
   // `resultBelow`, keeps it when it bounds the result (stage 2, classify), and moves both to
   // just above it.
-  void labelStarting(SweepPiece& a, Windings& wind, int& resultBelow, const XPoint& p) {
+  [[gnu::always_inline]] void labelStarting(SweepPiece& a, Windings& wind, int& resultBelow,
+                                            const XPoint& p) {
     a.windBelow = compact(wind);
     a.resultBelow = resultBelow;
     a.slot = -1;

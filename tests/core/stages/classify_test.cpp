@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdint>
+#include <limits>
 #include <map>
 #include <string>
 #include <utility>
@@ -58,16 +60,26 @@ TEST(StageClassify, BinaryOperationsCombineBothOperands) {
 }
 
 // inside() looks the operation up in a truth table; here every operation, every pair of fill
-// rules and every pair of winding numbers in [-3, 3] against the oracle's combine().
+// rules and every pair of winding numbers in [-3, 3] and a few far ones (+-2^31 +- 1, +-2^62,
+// the 64-bit extremes) against the oracle's combine().
 TEST(StageClassify, InsideIsTheOperationOfBothFillRules) {
   const FillRule rules[] = {FillRule::EvenOdd, FillRule::NonZero, FillRule::Positive,
                             FillRule::Negative};
   const ClipOp ops[] = {ClipOp::Intersection, ClipOp::Union, ClipOp::Difference, ClipOp::Xor};
+  std::vector<std::int64_t> windings;
+  for (std::int64_t v = -3; v <= 3; ++v) windings.push_back(v);
+  constexpr std::int64_t kFar = std::int64_t{1} << 31;
+  for (const std::int64_t v : {kFar - 1, kFar, kFar + 1, std::int64_t{1} << 62,
+                               std::numeric_limits<std::int64_t>::max()}) {
+    windings.push_back(v);
+    windings.push_back(-v);
+  }
+  windings.push_back(std::numeric_limits<std::int64_t>::min());
   int checked = 0;
   for (const FillRule subjectRule : rules) {
     for (const FillRule clipRule : rules) {
-      for (int sw = -3; sw <= 3; ++sw) {
-        for (int cw = -3; cw <= 3; ++cw) {
+      for (const std::int64_t sw : windings) {
+        for (const std::int64_t cw : windings) {
           const bool s = isFilled(subjectRule, sw), c = isFilled(clipRule, cw);
           auto simplify = stages::simplifyWith(subjectRule);
           EXPECT_EQ(simplify.inside(w(sw, cw)), s);
@@ -83,7 +95,7 @@ TEST(StageClassify, InsideIsTheOperationOfBothFillRules) {
       }
     }
   }
-  EXPECT_EQ(checked, 4 * 4 * 7 * 7 * 4);
+  EXPECT_EQ(checked, 4 * 4 * 18 * 18 * 4);
 }
 
 TEST(StageClassify, OpenPiecesAreInsideOnTheBoundaryOrOutside) {
