@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdint>
 #include <iterator>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -172,6 +173,48 @@ inline Side classifyPiece(const Windings& below, const Windings& contribution,
   if (in == above) return Side::None;
   return above ? Side::Above : Side::Below;
 }
+
+/// BooleanSpec::inside() for the many pieces of one sweep (which classifies each piece from the
+/// sides below and above it, as classifyPiece()): the operation's truth table and the fill rules
+/// are read once, and each rule becomes a test without a branch or a switch per winding
+/// number, ((sign * w) & mask) != 0: even-odd (1, 1), non-zero (1, -1), negative (1, the sign
+/// bit), positive (-1, the sign bit). (The switches per rule and per operation were 9% of
+/// W3-1k non-zero's instructions.) Winding numbers are sums of +-1 over input edges: |w| < 2^63.
+class PieceClassifier {
+ public:
+  explicit PieceClassifier(const BooleanSpec& spec)
+      : subject_(testOf(spec.subjectRule)),
+        clip_(spec.binary ? testOf(spec.clipRule) : RuleTest{1, 0}),
+        table_(spec.truthTable()) {}
+  /// BooleanSpec::inside().
+  [[nodiscard]] bool inside(const Windings& w) const {
+    return ((table_ >> (subject_.filled(w[0]) | clip_.filled(w[1]) << 1)) & 1U) != 0;
+  }
+
+ private:
+  struct RuleTest {
+    std::int64_t sign, mask;
+    [[nodiscard]] unsigned filled(std::int64_t w) const {
+      return ((sign * w) & mask) != 0 ? 1U : 0U;
+    }
+  };
+  static RuleTest testOf(FillRule rule) {
+    constexpr std::int64_t kSignBit = std::numeric_limits<std::int64_t>::min();
+    switch (rule) {
+      case FillRule::EvenOdd:
+        return {1, 1};
+      case FillRule::NonZero:
+        return {1, -1};
+      case FillRule::Positive:
+        return {-1, kSignBit};
+      case FillRule::Negative:
+        return {1, kSignBit};
+    }
+    return {1, 0};
+  }
+  RuleTest subject_, clip_;  // without a clip, a test no winding number passes
+  unsigned table_;
+};
 
 /// Where a piece of an open polyline lies relative to the region.
 enum class LinePlace : std::uint8_t {

@@ -413,9 +413,8 @@ class Sweep {
     cursor_ += 2;
     closeAt(a, p);
     const int below = node->below != nullptr ? node->below->piece : -1;
-    Windings wind = below >= 0 ? pieces_[std::size_t(below)].windAbove() : Windings{};
-    int resultBelow = below >= 0 ? pieces_[std::size_t(below)].nearestResult() : -1;
-    labelStarting(b, wind, resultBelow, p);
+    Labels at = labelsAbove(below);
+    labelStarting(b, at, p);
     node->piece = next;
     b.node = node;
     checkCrossing(below, next, p);
@@ -449,10 +448,9 @@ class Sweep {
     a.left = p;
     b.left = p;
     const int below = lo->below != nullptr ? lo->below->piece : -1;
-    Windings wind = below >= 0 ? pieces_[std::size_t(below)].windAbove() : Windings{};
-    int resultBelow = below >= 0 ? pieces_[std::size_t(below)].nearestResult() : -1;
-    labelStarting(b, wind, resultBelow, p);
-    labelStarting(a, wind, resultBelow, p);
+    Labels at = labelsAbove(below);
+    labelStarting(b, at, p);
+    labelStarting(a, at, p);
     lo->piece = upper;
     b.node = lo;
     hi->piece = lower;
@@ -537,34 +535,51 @@ class Sweep {
   }
 
   // Piece a leaves the status at p: its result piece, if any, ends there.
-  void closeAt(SweepPiece& a, const XPoint& p) {
+  [[gnu::always_inline]] void closeAt(SweepPiece& a, const XPoint& p) {
     a.node = nullptr;
     if (a.slot >= 0) out_.pieces[a.slot].right = vertexHere(p);
   }
 
-  // Labels piece a, starting at p just above the winding numbers `wind` and the result piece
-  // `resultBelow`, keeps it when it bounds the result (stage 2, classify), and moves both to
-  // just above it.
-  [[gnu::always_inline]] void labelStarting(SweepPiece& a, Windings& wind, int& resultBelow,
-                                            const XPoint& p) {
-    a.windBelow = compact(wind);
-    a.resultBelow = resultBelow;
+  // What a piece starting at p gets from just below it: the winding numbers there, whether the
+  // result holds that point, and the nearest result piece below.
+  struct Labels {
+    Windings wind{};
+    bool inside = false;
+    int resultBelow = -1;
+  };
+  // The labels just above piece `below` (-1: none, below everything).
+  [[nodiscard, gnu::always_inline]] Labels labelsAbove(int below) const {
+    Labels at;
+    if (below >= 0) {
+      const SweepPiece& b = pieces_[std::size_t(below)];
+      at.wind = b.windAbove();
+      at.resultBelow = b.nearestResult();
+    }
+    at.inside = classifier_.inside(at.wind);
+    return at;
+  }
+  // Labels piece a, starting at p just above `at`, keeps it when it bounds the result, and moves
+  // `at` to just above it.
+  [[gnu::always_inline]] void labelStarting(SweepPiece& a, Labels& at, const XPoint& p) {
+    a.windBelow = compact(at.wind);
+    a.resultBelow = at.resultBelow;
     a.slot = -1;
-    const Side side = a.open || !spec_.keepBoundary
-                          ? Side::None
-                          : classifyPiece(wind, widen(a.contribution), spec_);
-    if (side != Side::None) {
+    at.wind = a.windAbove();
+    // Stage 2 (classify): whether the piece bounds the result, and on which side; the side
+    // above is the next piece's side below.
+    const bool in = at.inside;
+    at.inside = classifier_.inside(at.wind);
+    if (!a.open && spec_.keepBoundary && in != at.inside) {
       a.slot = int(out_.pieces.size());
       EdgePiece kept;
       static_cast<GridSegment&>(kept) = a;
       if (spec_.recordWindings) out_.windings.push_back(a);
       kept.left = vertexHere(p);
-      kept.below = resultBelow;
+      kept.below = at.resultBelow;
       out_.pieces.push_back(kept);
-      out_.sides.push_back(side);
+      out_.sides.push_back(at.inside ? Side::Above : Side::Below);
     }
-    wind = a.windAbove();
-    resultBelow = a.nearestResult();
+    at.resultBelow = a.nearestResult();
   }
 
   // Labels the pieces starting at p bottom to top with the winding numbers from the piece
@@ -573,8 +588,7 @@ class Sweep {
   // nodes [lo, hi) are reused in order (a chain going on, two pieces crossing) and only the
   // surplus is unlinked or linked, without comparisons.
   void insertStarting(StatusNode* lo, StatusNode* hi, int below, const XPoint& p) {
-    Windings wind = below >= 0 ? pieces_[below].windAbove() : Windings{};
-    int resultBelow = below >= 0 ? pieces_[below].nearestResult() : -1;
+    Labels at = labelsAbove(below);
     int closedRun = -1;  // the last closed piece inserted here, and the winding below it
     Windings closedRunBelow{};
     StatusNode* n = lo;  // the first node from lo up to hi not yet holding a starting piece
@@ -585,12 +599,12 @@ class Sweep {
         // the region's winding numbers on its two sides are the ones around that piece.
         const bool onClosed =
             closedRun >= 0 && crossSign(pieces_[closedRun].direction(), a.direction()) == 0;
-        a.place = classifyOpenPiece(onClosed ? closedRunBelow : wind, wind, spec_);
+        a.place = classifyOpenPiece(onClosed ? closedRunBelow : at.wind, at.wind, spec_);
       } else {
         closedRun = i;
-        closedRunBelow = wind;
+        closedRunBelow = at.wind;
       }
-      labelStarting(a, wind, resultBelow, p);
+      labelStarting(a, at, p);
       if (n != hi) {  // same position in the order, see above
         n->piece = i;
         a.node = n;
@@ -728,7 +742,8 @@ class Sweep {
   }
 
   const BooleanSpec& spec_;
-  std::uint64_t crossings_ = 0;  // crossings found so far (Limits::maxCrossings)
+  const PieceClassifier classifier_{spec_};  // stage 2 for every closed piece
+  std::uint64_t crossings_ = 0;              // crossings found so far (Limits::maxCrossings)
   int vertex_ = -1;
   std::array<int, 2> crossingHere_{-1, -1};  // two pieces crossing at the current event point
   std::vector<SweepPiece>& pieces_;

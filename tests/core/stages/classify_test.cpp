@@ -98,6 +98,49 @@ TEST(StageClassify, InsideIsTheOperationOfBothFillRules) {
   EXPECT_EQ(checked, 4 * 4 * 18 * 18 * 4);
 }
 
+// The sweep's PieceClassifier (each fill rule as a sign and a mask, the truth table read once)
+// against BooleanSpec::inside(): every operation and pair of fill rules, simplify too, winding
+// numbers in [-3, 3] and far ones (up to 2^62 - 1 in magnitude).
+TEST(StageClassify, PieceClassifierAgreesWithInside) {
+  const FillRule rules[] = {FillRule::EvenOdd, FillRule::NonZero, FillRule::Positive,
+                            FillRule::Negative};
+  const ClipOp ops[] = {ClipOp::Intersection, ClipOp::Union, ClipOp::Difference, ClipOp::Xor};
+  std::vector<std::int64_t> windings;
+  for (std::int64_t v = -3; v <= 3; ++v) windings.push_back(v);
+  for (const std::int64_t v :
+       {(std::int64_t{1} << 31) + 1, std::int64_t{1} << 40, (std::int64_t{1} << 62) - 1}) {
+    windings.push_back(v);
+    windings.push_back(-v);
+  }
+  std::vector<detail::BooleanSpec> specs;
+  for (const FillRule subjectRule : rules) {
+    specs.push_back(stages::simplifyWith(subjectRule));
+    for (const FillRule clipRule : rules) {
+      for (const ClipOp op : ops) {
+        auto spec = stages::clipWith(op);
+        spec.subjectRule = subjectRule;
+        spec.clipRule = clipRule;
+        specs.push_back(spec);
+      }
+    }
+  }
+  int inside = 0, checked = 0;
+  for (const detail::BooleanSpec& spec : specs) {
+    const detail::PieceClassifier classifier(spec);
+    for (const std::int64_t sw : windings) {
+      for (const std::int64_t cw : windings) {
+        const bool expected = spec.inside(w(sw, cw));
+        ASSERT_EQ(classifier.inside(w(sw, cw)), expected) << sw << ", " << cw;
+        inside += expected ? 1 : 0;
+        ++checked;
+      }
+    }
+  }
+  EXPECT_EQ(checked, (4 + 4 * 4 * 4) * 13 * 13);
+  EXPECT_GT(inside, checked / 4);  // both answers occur
+  EXPECT_LT(inside, checked * 3 / 4);
+}
+
 TEST(StageClassify, OpenPiecesAreInsideOnTheBoundaryOrOutside) {
   const auto how = stages::simplifyWith(FillRule::EvenOdd);
   EXPECT_EQ(detail::classifyOpenPiece(w(1), w(1), how), detail::LinePlace::Inside);
