@@ -333,8 +333,17 @@ inline int tableBits(std::size_t count) {
 /// The point a + (num / den) * (b - a) on the line through grid points a, b; den > 0. Crossings
 /// on the grid come back with W == 1.
 inline void pointAlong(IPoint a, IPoint b, i128 num, i128 den, XPoint& out) {
-  const i128 x = i128(a.x) * den + i128(b.x - a.x) * num;
-  const i128 y = i128(a.y) * den + i128(b.y - a.y) * num;
+  // Both mostly fit 64 bits (grid points within 2^30 of the origin: each is a difference of two
+  // products below 2^62): then each coordinate takes two 64-by-64-bit products, not 128-by-128.
+  i128 x, y;
+  if (num == i128(std::int64_t(num)) && den == i128(std::int64_t(den))) {
+    const std::int64_t n = std::int64_t(num), d = std::int64_t(den);
+    x = i128(a.x) * d + i128(b.x - a.x) * n;
+    y = i128(a.y) * d + i128(b.y - a.y) * n;
+  } else {
+    x = i128(a.x) * den + i128(b.x - a.x) * num;
+    y = i128(a.y) * den + i128(b.y - a.y) * num;
+  }
   // Not reduced by gcds (that cost more than the rest of the crossing): comparisons are exact
   // for any representation. Crossings on the grid are stored with W == 1 for the fast paths;
   // the double quotient is within 2^-50 relative of the exact one, so a grid point is always
