@@ -7,8 +7,9 @@
 // on its two sides, is what makes the decision correct for nested, overlapping and touching
 // contours and for every fill rule, not just even-odd and non-zero.
 //
-// classifyPiece() and BooleanSpec::inside() are inline in pipeline.hpp: the sweep asks them for
-// every piece (4% of a crossing-heavy row as calls into this file).
+// classifyPiece(), sideBetween(), BooleanSpec::inside() and the sweep's PieceClassifier are
+// inline in pipeline.hpp: the sweep asks them for every piece (4% of a crossing-heavy row as
+// calls into this file).
 #include <roiclip/roiclip.hpp>
 
 #include "pipeline.hpp"

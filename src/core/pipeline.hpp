@@ -162,16 +162,22 @@ struct BooleanSpec {
   }
 };
 
+/// The side of a piece the result lies on, from whether the result holds the points just below
+/// and just above it. Pieces between regions of equal status (the paper's "edges inside holes")
+/// get Side::None and are not kept.
+inline Side sideBetween(bool below, bool above) {
+  if (below == above) return Side::None;
+  return above ? Side::Above : Side::Below;
+}
+
 /// Stage 2 (classify.cpp): from the winding numbers just below a piece and its contribution,
 /// the fill rules and the operation decide whether the piece bounds the result and on which
-/// side the result lies. Pieces between regions of equal status (the paper's "edges inside
-/// holes") get Side::None and are not kept.
+/// side the result lies. (The sweep asks the same through a PieceClassifier, one inside() per
+/// side shared by the pieces on either side of it.)
 inline Side classifyPiece(const Windings& below, const Windings& contribution,
                           const BooleanSpec& spec) {
-  const bool in = spec.inside(below);
-  const bool above = spec.inside({below[0] + contribution[0], below[1] + contribution[1]});
-  if (in == above) return Side::None;
-  return above ? Side::Above : Side::Below;
+  return sideBetween(spec.inside(below),
+                     spec.inside({below[0] + contribution[0], below[1] + contribution[1]}));
 }
 
 /// BooleanSpec::inside() for the many pieces of one sweep (which classifies each piece from the
