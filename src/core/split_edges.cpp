@@ -716,14 +716,13 @@ class Sweep {
     // boxes overlap: the box test is cheaper than the history, and on a contour most neighbours
     // fail it.
     if (testedBefore(pa, b)) return;
-    // Two pieces leaving the same point (right after their crossing) cannot cross again.
-    if (equalInBox(pa.left, pb.left)) return;
     // Two supporting segments with a common right end (the two edges of a contour's vertex
     // that points right, neighbours before it) meet there or nowhere unless collinear (then
     // segmentCrossing() finds nothing either), and that end is no event to queue: it is at or
-    // beyond each piece's own right end. (Other common ends are rarely tested: the two edges of a
-    // vertex pointing left leave it together, caught above, and an edge that ends where the
-    // next starts is out of the status when that one enters.)
+    // beyond each piece's own right end. (Other common ends are rarely tested: two pieces leaving
+    // a point together are tested only once a piece between them has ended, and their lines
+    // meet at that point, behind the sweep, rejected below; an edge that ends where the next
+    // starts is out of the status when that one enters.)
     if (pa.lineB() == pb.lineB()) return;
     XPoint x;
     if (!segmentCrossing(pa.lineA(), pa.lineB(), pb.lineA(), pb.lineB(), x)) return;
