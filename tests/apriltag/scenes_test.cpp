@@ -574,7 +574,7 @@ TEST_P(AprilTagScene, ClippingWithASelfIntersectingTagRoi) {
 std::vector<std::string> sceneNames() {
   std::vector<std::string> names;
   for (int i = 1; i <= 8; ++i) {
-    char name[16];
+    char name[24];  // room for any int: GCC warns on 16 (-Wformat-truncation)
     std::snprintf(name, sizeof name, "scene_%02d", i);
     names.emplace_back(name);
   }
