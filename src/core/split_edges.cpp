@@ -277,20 +277,18 @@ class Sweep {
     placeFrom(hole, last);
   }
   [[nodiscard]] const SweepEvent& top() const { return queue_.front(); }
+  [[nodiscard]] XPoint topPoint() const { return eventPoint(queue_.front(), eventPoints_); }
+  // Whether the queued event at heap index i (none there: false) lies at p (which lies within
+  // the grid's range, as every sweep point).
+  [[nodiscard]] bool eventAt(std::size_t i, const XPoint& p) const {
+    return i < queue_.size() && compareCachedInBox(queue_[i].fx, p.fx) == 0 &&
+           equalInBox(eventPoint(queue_[i], eventPoints_), p);
+  }
+  // The earliest event is at p.
+  [[nodiscard]] bool topAt(const XPoint& p) const { return eventAt(0, p); }
   // Whether a queued event other than the first lies at p, the first's point: one would be
   // a child of the root (each event comes no earlier than its parent).
-  [[nodiscard]] bool secondEventAt(const XPoint& p) const {
-    const auto at = [&](std::size_t i) {
-      return i < queue_.size() && compareCachedInBox(queue_[i].fx, p.fx) == 0 &&
-             equalInBox(eventPoint(queue_[i], eventPoints_), p);
-    };
-    return at(1) || at(2);
-  }
-  [[nodiscard]] XPoint topPoint() const { return eventPoint(queue_.front(), eventPoints_); }
-  // The earliest event is at p (which lies within the grid's range, as every sweep point).
-  [[nodiscard]] bool topAt(const XPoint& p) const {
-    return compareCachedInBox(top().fx, p.fx) == 0 && equalInBox(topPoint(), p);
-  }
+  [[nodiscard]] bool secondEventAt(const XPoint& p) const { return eventAt(1, p) || eventAt(2, p); }
 
   // The next event point; pointKey_ is its start key when the next start lies there (the starts
   // at p are then the ones with that key), else a key no start has.
@@ -364,11 +362,11 @@ class Sweep {
     const auto [locator, known] = takeEventsAt(p);
     const auto [lo, hi] = piecesThrough(p, locator, known);
     const StatusNode* belowNode = lo != nullptr ? lo->below : top_;
-    const int below = belowNode != nullptr ? belowNode->piece : -1;
+    const int below = pieceIn(belowNode);
     cutAt(lo, hi, p);
     mergeCoincident();
     insertStarting(lo, hi, below, p);
-    const int above = hi != nullptr ? hi->piece : -1;
+    const int above = pieceIn(hi);
     if (starting_.empty()) {
       checkCrossing(below, above, p);
     } else {
@@ -382,6 +380,8 @@ class Sweep {
   // crossing. Both need that no other event lies at p and no other piece passes through it;
   // otherwise they return false before changing anything, and the general visit takes p.
 
+  // The piece in node n, -1 for none.
+  static int pieceIn(const StatusNode* n) { return n != nullptr ? n->piece : -1; }
   // Whether the active piece in node n passes through p.
   [[nodiscard]] bool passesThrough(const StatusNode* n, const XPoint& p) const {
     const SweepPiece& a = pieces_[std::size_t(n->piece)];
@@ -411,17 +411,17 @@ class Sweep {
     SweepPiece& b = pieces_[std::size_t(next)];
     StatusNode* node = a.node;
     if (node == nullptr || a.open || b.open || cancelled(b)) return false;
-    if (!queue_.empty() && topAt(p)) return false;
+    if (topAt(p)) return false;
     if (!aloneAt(node, node, p)) return false;
     cursor_ += 2;
     closeAt(a, p);
-    const int below = node->below != nullptr ? node->below->piece : -1;
+    const int below = pieceIn(node->below);
     Labels at = labelsAbove(below);
     labelStarting(b, at, p);
     node->piece = next;
     b.node = node;
     checkCrossing(below, next, p);
-    checkCrossing(next, node->above != nullptr ? node->above->piece : -1, p);
+    checkCrossing(next, pieceIn(node->above), p);
     return true;
   }
 
@@ -450,7 +450,7 @@ class Sweep {
     closeAt(b, p);
     a.left = p;
     b.left = p;
-    const int below = lo->below != nullptr ? lo->below->piece : -1;
+    const int below = pieceIn(lo->below);
     Labels at = labelsAbove(below);
     labelStarting(b, at, p);
     labelStarting(a, at, p);
@@ -459,7 +459,7 @@ class Sweep {
     hi->piece = lower;
     a.node = hi;
     checkCrossing(below, upper, p);
-    checkCrossing(lower, hi->above != nullptr ? hi->above->piece : -1, p);
+    checkCrossing(lower, pieceIn(hi->above), p);
     return true;
   }
 
@@ -479,7 +479,7 @@ class Sweep {
       }
       ++cursor_;
     }
-    while (!queue_.empty() && topAt(p)) {
+    while (topAt(p)) {
       const SweepEvent& ev = top();
       if (ev.piece >= 0) starting_.push_back(ev.piece);
       // A crossing lies exactly on the lines of both its pieces, and a piece still in the

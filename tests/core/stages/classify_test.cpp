@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <initializer_list>
 #include <limits>
 #include <map>
 #include <string>
@@ -21,6 +22,21 @@ namespace roiclip {
 namespace {
 
 detail::Windings w(std::int64_t s, std::int64_t c = 0) { return {s, c}; }
+
+const FillRule kRules[] = {FillRule::EvenOdd, FillRule::NonZero, FillRule::Positive,
+                           FillRule::Negative};
+const ClipOp kOps[] = {ClipOp::Intersection, ClipOp::Union, ClipOp::Difference, ClipOp::Xor};
+
+// Winding numbers in [-3, 3] and each of `far` in both signs.
+std::vector<std::int64_t> windingsWith(std::initializer_list<std::int64_t> far) {
+  std::vector<std::int64_t> windings;
+  for (std::int64_t v = -3; v <= 3; ++v) windings.push_back(v);
+  for (const std::int64_t v : far) {
+    windings.push_back(v);
+    windings.push_back(-v);
+  }
+  return windings;
+}
 
 TEST(StageClassify, SimplifyDecidesFromTheSubjectsFillRule) {
   const auto evenOdd = stages::simplifyWith(FillRule::EvenOdd);
@@ -63,27 +79,19 @@ TEST(StageClassify, BinaryOperationsCombineBothOperands) {
 // rules and every pair of winding numbers in [-3, 3] and a few far ones (+-2^31 +- 1, +-2^62,
 // the 64-bit extremes) against the oracle's combine().
 TEST(StageClassify, InsideIsTheOperationOfBothFillRules) {
-  const FillRule rules[] = {FillRule::EvenOdd, FillRule::NonZero, FillRule::Positive,
-                            FillRule::Negative};
-  const ClipOp ops[] = {ClipOp::Intersection, ClipOp::Union, ClipOp::Difference, ClipOp::Xor};
-  std::vector<std::int64_t> windings;
-  for (std::int64_t v = -3; v <= 3; ++v) windings.push_back(v);
   constexpr std::int64_t kFar = std::int64_t{1} << 31;
-  for (const std::int64_t v : {kFar - 1, kFar, kFar + 1, std::int64_t{1} << 62,
-                               std::numeric_limits<std::int64_t>::max()}) {
-    windings.push_back(v);
-    windings.push_back(-v);
-  }
+  std::vector<std::int64_t> windings = windingsWith(
+      {kFar - 1, kFar, kFar + 1, std::int64_t{1} << 62, std::numeric_limits<std::int64_t>::max()});
   windings.push_back(std::numeric_limits<std::int64_t>::min());
   int checked = 0;
-  for (const FillRule subjectRule : rules) {
-    for (const FillRule clipRule : rules) {
+  for (const FillRule subjectRule : kRules) {
+    for (const FillRule clipRule : kRules) {
       for (const std::int64_t sw : windings) {
         for (const std::int64_t cw : windings) {
           const bool s = isFilled(subjectRule, sw), c = isFilled(clipRule, cw);
           auto simplify = stages::simplifyWith(subjectRule);
           EXPECT_EQ(simplify.inside(w(sw, cw)), s);
-          for (const ClipOp op : ops) {
+          for (const ClipOp op : kOps) {
             auto spec = stages::clipWith(op);
             spec.subjectRule = subjectRule;
             spec.clipRule = clipRule;
@@ -102,21 +110,13 @@ TEST(StageClassify, InsideIsTheOperationOfBothFillRules) {
 // against BooleanSpec::inside(): every operation and pair of fill rules, simplify too, winding
 // numbers in [-3, 3] and far ones (up to 2^62 - 1 in magnitude).
 TEST(StageClassify, PieceClassifierAgreesWithInside) {
-  const FillRule rules[] = {FillRule::EvenOdd, FillRule::NonZero, FillRule::Positive,
-                            FillRule::Negative};
-  const ClipOp ops[] = {ClipOp::Intersection, ClipOp::Union, ClipOp::Difference, ClipOp::Xor};
-  std::vector<std::int64_t> windings;
-  for (std::int64_t v = -3; v <= 3; ++v) windings.push_back(v);
-  for (const std::int64_t v :
-       {(std::int64_t{1} << 31) + 1, std::int64_t{1} << 40, (std::int64_t{1} << 62) - 1}) {
-    windings.push_back(v);
-    windings.push_back(-v);
-  }
+  const std::vector<std::int64_t> windings = windingsWith(
+      {(std::int64_t{1} << 31) + 1, std::int64_t{1} << 40, (std::int64_t{1} << 62) - 1});
   std::vector<detail::BooleanSpec> specs;
-  for (const FillRule subjectRule : rules) {
+  for (const FillRule subjectRule : kRules) {
     specs.push_back(stages::simplifyWith(subjectRule));
-    for (const FillRule clipRule : rules) {
-      for (const ClipOp op : ops) {
+    for (const FillRule clipRule : kRules) {
+      for (const ClipOp op : kOps) {
         auto spec = stages::clipWith(op);
         spec.subjectRule = subjectRule;
         spec.clipRule = clipRule;
