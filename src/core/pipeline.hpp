@@ -135,6 +135,9 @@ struct BooleanSpec {
   /// Whether the arrangement records the winding numbers of its pieces (Arrangement::windings):
   /// the stage tests check them; no stage reads them.
   bool recordWindings = false;
+  /// Whether the sweep may find dense crossings slab by slab (split_edges.cpp, slab mode); the
+  /// stage tests compare the arrangements with and without.
+  bool slabs = true;
   /// Whether a point with these winding numbers is in the result. (Inline: the sweep asks this
   /// twice for every piece.) The operation is a truth table over (subject filled, clip filled),
   /// looked up without a branch on the windings: on W3 a branch on whether the subject is
@@ -366,6 +369,8 @@ struct Arrangement {
   std::vector<OpenPiece> openPieces;
   /// Crossings the sweep found (what Limits::maxCrossings counts).
   std::uint64_t crossings = 0;
+  /// Slabs whose crossings the sweep found by a slab pass (slab mode).
+  std::uint64_t slabPasses = 0;
 
   /// Vertex v as exact coordinates (X/W, Y/W), W > 0, not reduced.
   [[nodiscard]] ExactCoords exact(int v) const {

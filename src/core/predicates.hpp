@@ -332,7 +332,7 @@ inline int tableBits(std::size_t count) {
 
 /// The point a + (num / den) * (b - a) on the line through grid points a, b; den > 0. Crossings
 /// on the grid come back with W == 1.
-inline void pointAlong(IPoint a, IPoint b, i128 num, i128 den, XPoint& out) {
+[[gnu::always_inline]] inline void pointAlong(IPoint a, IPoint b, i128 num, i128 den, XPoint& out) {
   // Both mostly fit 64 bits (grid points within 2^30 of the origin: each is a difference of two
   // products below 2^62): then each coordinate takes two 64-by-64-bit products, not 128-by-128.
   i128 x, y;

@@ -11,9 +11,15 @@
 // new piece, it also labels each piece with the winding numbers on both of its sides. The two
 // most common event points, a contour's chain going on and two adjacent pieces crossing, each
 // with nothing else at the point, take a short visit that reuses the status nodes as they are.
+// Where crossings are dense, the sweep finds them slab by slab instead (slab mode): between two
+// consecutive x of input vertices, the pairs whose order at the slab's right end is the reverse
+// of the status order, by one insertion sort, queued in a sorted list beside the heap.
 //
 // Cost: O((n + k) log n) time for n edges and k intersection points, O(n + k) memory.
 #include <algorithm>
+#include <limits>
+
+#include <boost/sort/pdqsort/pdqsort.hpp>
 
 #include <roiclip/error.hpp>
 
@@ -63,6 +69,9 @@ inline bool atGridPoint(const XPoint& p, IPoint q) { return p.w == 1 && p.x == q
 
 inline IPoint gridPoint(const XPoint& p) { return {std::int64_t(p.x), std::int64_t(p.y)}; }
 
+// kSlabs: whether the sweep may take slab mode (slabs below), decided before it is built from
+// what can start inside a slab; without it, none of slab mode's tests is compiled in.
+template <bool kSlabs>
 class Sweep {
  public:
   Sweep(const std::vector<InputEdge>& edges, const std::vector<ExactEdge>& exactEdges,
@@ -77,6 +86,8 @@ class Sweep {
         freeEventPoints_(ws.freeEventPoints),
         starting_(ws.starting),
         through_(ws.through),
+        slabOrder_(ws.slabOrder),
+        slabEvents_(ws.slabEvents),
         nodes_(ws.nodes),
         freeNodes_(ws.freeNodes),
         status_(StatusLess{&pieces_}) {
@@ -89,6 +100,7 @@ class Sweep {
     exactRights_.reserve(exactEdges.size());
     starts_.clear();
     queue_.clear();
+    slabEvents_.clear();
     eventPoints_.clear();
     freeEventPoints_.clear();
     nodes_.clear();
@@ -103,10 +115,12 @@ class Sweep {
       a.setLine(e.a, e.b);
       a.contribution[e.operand] = e.open ? 0 : e.direction;
       a.open = e.open;
+      if constexpr (kSlabs) slabsAllowed_ &= !e.open;
       starts_.push_back({frame_.key(e.a), id, false});
       starts_.push_back({frame_.key(e.b), id, true});
     }
     // Edges with off-grid ends start from the event queue; their ends are plain events.
+    slabsAllowed_ &= exactEdges.empty();
     for (const ExactEdge& e : exactEdges) {
       const int id = int(pieces_.size());
       SweepPiece& a = pieces_.emplace_back();
@@ -150,6 +164,7 @@ class Sweep {
     while (nextPoint(p)) visit(p);
     if (!status_.empty()) throw InternalError("splitEdges: sweep ended with active pieces");
     out_.crossings = crossings_;
+    out_.slabPasses = slabPasses_;
     return std::move(out_);
   }
 
@@ -204,6 +219,7 @@ class Sweep {
       top_ = x;
     }
     status_.insert_before(at != nullptr ? status_.iterator_to(*at) : status_.end(), *x);
+    if constexpr (kSlabs) ++active_;
   }
   // Unlinks node x; returns the node that was above it.
   StatusNode* unlink(StatusNode* x) {
@@ -214,6 +230,7 @@ class Sweep {
       top_ = x->below;
     }
     status_.erase(status_.iterator_to(*x));
+    if constexpr (kSlabs) --active_;
     return x->above;
   }
 
@@ -235,18 +252,21 @@ class Sweep {
 
   // x must not lie in eventPoints_ (it may move).
   void push(const XPoint& x, int pieceId, int through = -1, int other = -1) {
-    int slot;
-    if (!freeEventPoints_.empty()) {
-      slot = freeEventPoints_.back();
-      freeEventPoints_.pop_back();
-      eventPoints_[std::size_t(slot)] = {x.x, x.y, x.w};
-    } else {
-      slot = int(eventPoints_.size());
-      eventPoints_.push_back({x.x, x.y, x.w});
-    }
+    const int slot = storePoint(x);
     // Binary heap, earliest event at the root: the new event climbs from a new leaf.
     queue_.emplace_back();
     placeFrom(queue_.size() - 1, {x.fx, x.fy, slot, pieceId, through, other});
+  }
+  // x's exact coordinates in the event point pool: their slot.
+  int storePoint(const XPoint& x) {
+    if (!freeEventPoints_.empty()) {
+      const int slot = freeEventPoints_.back();
+      freeEventPoints_.pop_back();
+      eventPoints_[std::size_t(slot)] = {x.x, x.y, x.w};
+      return slot;
+    }
+    eventPoints_.push_back({x.x, x.y, x.w});
+    return int(eventPoints_.size()) - 1;
   }
   // Puts ev at `hole` or, while its parent comes after it, moves the parent down and climbs.
   void placeFrom(std::size_t hole, const SweepEvent& ev) {
@@ -261,7 +281,7 @@ class Sweep {
   // Removes the earliest event (Floyd's order: the hole at the root sinks to a leaf along the
   // earlier child, one comparison per level, and the last event climbs back from there; it
   // mostly stays near the bottom).
-  void pop() {
+  void popHeap() {
     freeEventPoints_.push_back(queue_.front().point);
     const SweepEvent last = queue_.back();
     queue_.pop_back();
@@ -276,33 +296,65 @@ class Sweep {
     }
     placeFrom(hole, last);
   }
-  [[nodiscard]] const SweepEvent& top() const { return queue_.front(); }
-  [[nodiscard]] XPoint topPoint() const { return eventPoint(queue_.front(), eventPoints_); }
-  // Whether the queued event at heap index i (none there: false) lies at p (which lies within
-  // the grid's range, as every sweep point).
-  [[nodiscard]] bool eventAt(std::size_t i, const XPoint& p) const {
-    return i < queue_.size() && compareCachedInBox(queue_[i].fx, p.fx) == 0 &&
-           equalInBox(eventPoint(queue_[i], eventPoints_), p);
+  // Events wait in two queues: the heap, and in slab mode the slab's crossings, sorted by the
+  // slab pass (slabEvents_ from slabHead_ on). The earliest of both comes first.
+  [[nodiscard]] bool anyEvent() const {
+    return !queue_.empty() || (kSlabs && slabHead_ < slabEvents_.size());
+  }
+  // Whether the earliest event is the slab list's (there is one).
+  [[nodiscard]] bool slabFirst() const {
+    return kSlabs && slabHead_ < slabEvents_.size() &&
+           (queue_.empty() || !eventAfter(slabEvents_[slabHead_], queue_.front(), eventPoints_));
+  }
+  // The earliest event (there is one).
+  [[nodiscard]] const SweepEvent& top() const {
+    return slabFirst() ? slabEvents_[slabHead_] : queue_.front();
+  }
+  [[nodiscard]] XPoint topPoint() const { return eventPoint(top(), eventPoints_); }
+  void pop() {
+    if (slabFirst()) {
+      freeEventPoints_.push_back(slabEvents_[slabHead_++].point);
+    } else {
+      popHeap();
+    }
+  }
+  // Whether ev lies at p (which lies within the grid's range, as every sweep point).
+  [[nodiscard]] bool isAt(const SweepEvent& ev, const XPoint& p) const {
+    return compareCachedInBox(ev.fx, p.fx) == 0 && equalInBox(eventPoint(ev, eventPoints_), p);
+  }
+  // Whether the heap's event at index i (none there: false) lies at p.
+  [[nodiscard]] bool heapEventAt(std::size_t i, const XPoint& p) const {
+    return i < queue_.size() && isAt(queue_[i], p);
+  }
+  // Whether the slab list's event at index i (none there: false) lies at p.
+  [[nodiscard]] bool slabEventAt(std::size_t i, const XPoint& p) const {
+    return i < slabEvents_.size() && isAt(slabEvents_[i], p);
   }
   // The earliest event is at p.
-  [[nodiscard]] bool topAt(const XPoint& p) const { return eventAt(0, p); }
-  // Whether a queued event other than the first lies at p, the first's point: one would be
-  // a child of the root (each event comes no earlier than its parent).
-  [[nodiscard]] bool secondEventAt(const XPoint& p) const { return eventAt(1, p) || eventAt(2, p); }
+  [[nodiscard]] bool topAt(const XPoint& p) const { return anyEvent() && isAt(top(), p); }
+  // Whether an event other than the earliest lies at p, the earliest's point: the next one of
+  // the same queue (in the heap, a child of the root: each event comes no earlier than its
+  // parent), or the other queue's first.
+  [[nodiscard]] bool secondEventAt(const XPoint& p) const {
+    if (!kSlabs) return heapEventAt(1, p) || heapEventAt(2, p);
+    if (slabFirst()) return slabEventAt(slabHead_ + 1, p) || heapEventAt(0, p);
+    return heapEventAt(1, p) || heapEventAt(2, p) || slabEventAt(slabHead_, p);
+  }
 
   // The next event point; pointKey_ is its start key when the next start lies there (the starts
   // at p are then the ones with that key), else a key no start has.
   bool nextPoint(XPoint& p) {
+    if (kSlabs && slabsAllowed_ && cursor_ < starts_.size()) startSlabIfDue();
     const bool hasStart = cursor_ < starts_.size();
     pointKey_ = kNoStartKey;
-    if (!hasStart && queue_.empty()) return false;
+    if (!hasStart && !anyEvent()) return false;
     if (!hasStart) {
       p = topPoint();
       return true;
     }
     const std::uint64_t key = starts_[cursor_].key;
     const XPoint a(frame_.point(key));
-    if (!queue_.empty()) {
+    if (anyEvent()) {
       const XPoint t = topPoint();
       if (lessInBox(t, a)) {
         p = t;
@@ -704,6 +756,14 @@ class Sweep {
     if (a < 0 || b < 0) return;
     SweepPiece& pa = pieces_[a];
     const SweepPiece& pb = pieces_[b];
+    // In slab mode the slab pass finds every crossing of two pieces spanning a slab; only a
+    // vertical piece (on the current line) can meet a neighbour elsewhere.
+    if (kSlabs && slabMode_ && pa.ax != pa.bx && pb.ax != pb.bx) return;
+    // a lies below b along the sweep (every caller passes a pair of neighbours in that order), so
+    // their lines meet ahead of the sweep only if a rises faster than b: its direction turns
+    // clockwise to b's. Parallel lines never meet, and a pair that crossed behind the sweep (re-
+    // adjacent after the crossing: common on random polygons) turns the other way.
+    if (crossSign(pa.direction(), pb.direction()) >= 0) return;
     // Cheap exact rejection on the integer supporting segments before the rational crossing.
     if (std::max(pa.lineA().x, pb.lineA().x) > std::min(pa.lineB().x, pb.lineB().x)) return;
     if (std::max(std::min(pa.lineA().y, pa.lineB().y), std::min(pb.lineA().y, pb.lineB().y)) >
@@ -738,11 +798,129 @@ class Sweep {
   // The one place a new crossing becomes an event: x, where pieces a and b cross; after the
   // work budget (Limits::maxCrossings) is checked, before the event takes memory.
   void queueCrossing(const XPoint& x, int a, int b) {
+    countCrossing();
+    push(x, -1, a, b);
+  }
+  void countCrossing() {
     if (++crossings_ > spec_.maxCrossings) {
       throw ResourceLimitError("maxCrossings", spec_.maxCrossings, "crossings");
     }
-    push(x, -1, a, b);
   }
+
+  // Slabs. Between two consecutive x of input vertices no piece starts or ends, so the pieces
+  // that cross there are the pairs whose order at the slab's right end is the reverse of the
+  // status order: an insertion sort of the active pieces by their height there finds each such
+  // pair once, by one swap, with no test of pairs that do not cross. Where crossings are dense
+  // (many per slab against the active pieces, as on random polygons) the sweep finds them so
+  // instead of testing new neighbours (slab mode); it switches at the x of input vertices, by the
+  // crossings found in the slab before.
+
+  // At the first point beyond the line x = slabRight_ (its starts and events all visited): the
+  // mode for the slab up to the next start's x, and that slab's pass in slab mode.
+  void startSlabIfDue() {
+    const std::int64_t next = frame_.point(starts_[cursor_].key).x;
+    if (next <= slabRight_) return;
+    if (anyEvent() && !beyondLine(top())) return;
+    const std::uint64_t found = crossings_ - crossingsAtSlab_;
+    const bool dense = found * (slabMode_ ? kLeaveSlabs : kEnterSlabs) >= std::uint64_t(active_);
+    if (dense != slabMode_) {
+      if (dense) {
+        enterSlabs();
+      } else {
+        leaveSlabs();
+      }
+    }
+    crossingsAtSlab_ = crossings_;
+    slabEvents_.clear();  // every one visited
+    slabHead_ = 0;
+    if (slabMode_) slabPass(next);
+    slabRight_ = next;
+  }
+  // Whether event ev lies beyond the line x = slabRight_ (no event lies before it).
+  [[nodiscard]] bool beyondLine(const SweepEvent& ev) const {
+    const int c = compareCachedInBox(ev.fx, double(slabRight_));
+    if (c != 0) return c > 0;
+    const ExactCoords& q = eventPoints_[std::size_t(ev.point)];
+    return compareCoord(q.x, q.w, slabRight_, 1) > 0;
+  }
+  [[nodiscard]] StatusNode* bottom() { return status_.empty() ? nullptr : &*status_.begin(); }
+  // Into slab mode: the queued crossings go (slab passes find them again, each in its slab).
+  void enterSlabs() {
+    std::size_t kept = 0;
+    for (const SweepEvent& ev : queue_) {
+      if (ev.through >= 0) {
+        freeEventPoints_.push_back(ev.point);
+      } else {
+        queue_[kept++] = ev;
+      }
+    }
+    queue_.resize(kept);
+    for (std::size_t i = 1; i < kept; ++i) placeFrom(i, SweepEvent(queue_[i]));
+    slabMode_ = true;
+  }
+  // Out of slab mode: no crossing is queued (the last slab's are visited), so every pair of
+  // neighbours is tested afresh, as in a sweep that starts here.
+  void leaveSlabs() {
+    slabMode_ = false;
+    for (StatusNode* n = bottom(); n != nullptr; n = n->above) {
+      pieces_[std::size_t(n->piece)].checkedAbove.fill(-1);
+    }
+    const XPoint line(IPoint{slabRight_, Grid::kMaxUnits});  // at or after every visited point
+    for (StatusNode* n = bottom(); n != nullptr && n->above != nullptr; n = n->above) {
+      checkCrossing(n->piece, n->above->piece, line);
+    }
+  }
+  // Queues every crossing of two active pieces in the slab from x = slabRight_ (excluded) to x
+  // (included). The status holds their order just after slabRight_; one that ends lower at x,
+  // or meets another there and goes on lower, crossed it in the slab.
+  void slabPass(std::int64_t x) {
+    ++slabPasses_;
+    slabOrder_.clear();
+    for (const StatusNode* n = bottom(); n != nullptr; n = n->above) {
+      const SweepPiece& a = pieces_[std::size_t(n->piece)];
+      const std::int64_t dx = std::int64_t(a.bx) - a.ax, dy = std::int64_t(a.by) - a.ay;
+      if (dx == 0) throw InternalError("splitEdges: a vertical piece spans a slab");
+      slabOrder_.push_back({std::int64_t(a.ay) * dx + dy * (x - a.ax), dx, n->piece});
+    }
+    const std::size_t n = slabOrder_.size();
+    for (std::size_t i = 1; i < n; ++i) {
+      const SlabEntry e = slabOrder_[i];
+      std::size_t j = i;
+      while (j > 0 && lowerAtSlabEnd(e, slabOrder_[j - 1])) {
+        crossInSlab(slabOrder_[j - 1].piece, e.piece);
+        slabOrder_[j] = slabOrder_[j - 1];
+        --j;
+      }
+      slabOrder_[j] = e;
+    }
+    boost::sort::pdqsort(slabEvents_.begin(), slabEvents_.end(),
+                         [this](const SweepEvent& a, const SweepEvent& b) {
+                           return eventAfter(b, a, eventPoints_);
+                         });
+  }
+  // Whether e lies below f just after the slab's right end.
+  [[nodiscard]] bool lowerAtSlabEnd(const SlabEntry& e, const SlabEntry& f) const {
+    const i128 l = i128(e.num) * f.dx, r = i128(f.num) * e.dx;
+    if (l != r) return l < r;
+    return crossSign(pieces_[std::size_t(e.piece)].direction(),
+                     pieces_[std::size_t(f.piece)].direction()) > 0;
+  }
+  // Pieces lower (below upper in the status) and upper cross in the slab: their lines' crossing,
+  // unless it is the right end of one of them (an input vertex, whose visit cuts the other).
+  void crossInSlab(int lower, int upper) {
+    const SweepPiece& a = pieces_[std::size_t(lower)];
+    const SweepPiece& b = pieces_[std::size_t(upper)];
+    XPoint x;
+    if (!lineIntersection(a.lineA(), a.lineB(), b.lineA(), b.lineB(), x)) {
+      throw InternalError("splitEdges: parallel pieces swapped in a slab");
+    }
+    if (atGridPoint(x, a.lineB()) || atGridPoint(x, b.lineB())) return;
+    countCrossing();
+    slabEvents_.push_back({x.fx, x.fy, storePoint(x), -1, lower, upper});
+  }
+  // Slab mode from a slab whose crossings found were at least 1/16 of the active pieces, normal
+  // mode from one with fewer than 1/64.
+  static constexpr std::uint64_t kEnterSlabs = 32, kLeaveSlabs = 128;
 
   const BooleanSpec& spec_;
   const PieceClassifier classifier_{spec_};  // stage 2 for every closed piece
@@ -763,6 +941,15 @@ class Sweep {
   std::vector<int>& freeEventPoints_;
   std::vector<int>& starting_;
   std::vector<int>& through_;
+  std::vector<SlabEntry>& slabOrder_;
+  std::vector<SweepEvent>& slabEvents_;  // the slab's crossings, sorted (slab mode)
+  std::size_t slabHead_ = 0;             // the first not visited
+  bool slabsAllowed_ = kSlabs;  // no open piece and no off-grid end: no piece starts in a slab
+  bool slabMode_ = false;
+  std::int64_t slabRight_ = std::numeric_limits<std::int64_t>::min();
+  std::uint64_t crossingsAtSlab_ = 0;  // crossings_ when the slab began
+  std::uint64_t slabPasses_ = 0;
+  int active_ = 0;  // pieces in the status
   std::deque<StatusNode>& nodes_;
   std::vector<StatusNode*>& freeNodes_;
   Status status_;
@@ -770,28 +957,45 @@ class Sweep {
   Arrangement out_;
 };
 
+// The sweep over edges and exactEdges; with releaseEdges, the workspace's edge arrays are
+// released once the sweep has its pieces (it does not read them again).
+template <bool kSlabs>
+Arrangement sweepEdges(const std::vector<InputEdge>& edges,
+                       const std::vector<ExactEdge>& exactEdges, const BooleanSpec& spec,
+                       Workspace& workspace, bool releaseEdges) {
+  Arrangement result;
+  {
+    Sweep<kSlabs> sweep(edges, exactEdges, spec, workspace);
+    if (releaseEdges) releaseEachAbove(kKeptStageBytes, workspace.edges, workspace.clipped);
+    result = sweep.run();
+  }
+  workspace.releaseSweepIfAbove(kKeptStageBytes);
+  return result;
+}
+
+// Slab mode needs every piece to start at an input vertex: no edge with an off-grid end (the
+// convex pre-clip's cut edges) and no open polyline (clipLines(), the only caller that keeps no
+// boundary; the sweep checks each edge too).
+Arrangement sweepEdges(const std::vector<InputEdge>& edges,
+                       const std::vector<ExactEdge>& exactEdges, const BooleanSpec& spec,
+                       Workspace& workspace, bool releaseEdges) {
+  workspace.generalPathUsed = true;
+  if (spec.slabs && exactEdges.empty() && spec.keepBoundary) {
+    return sweepEdges<true>(edges, exactEdges, spec, workspace, releaseEdges);
+  }
+  return sweepEdges<false>(edges, exactEdges, spec, workspace, releaseEdges);
+}
+
 }  // namespace
 
 Arrangement splitEdges(const std::vector<InputEdge>& edges,
                        const std::vector<ExactEdge>& exactEdges, const BooleanSpec& spec,
                        Workspace& workspace) {
-  workspace.generalPathUsed = true;
-  Arrangement result = Sweep(edges, exactEdges, spec, workspace).run();
-  workspace.releaseSweepIfAbove(kKeptStageBytes);
-  return result;
+  return sweepEdges(edges, exactEdges, spec, workspace, false);
 }
 
 Arrangement splitWorkspaceEdges(const BooleanSpec& spec, Workspace& workspace) {
-  workspace.generalPathUsed = true;
-  Arrangement result;
-  {
-    Sweep sweep(workspace.edges, workspace.clipped, spec, workspace);
-    // The sweep has its pieces: the edges are not read again.
-    releaseEachAbove(kKeptStageBytes, workspace.edges, workspace.clipped);
-    result = sweep.run();
-  }
-  workspace.releaseSweepIfAbove(kKeptStageBytes);
-  return result;
+  return sweepEdges(workspace.edges, workspace.clipped, spec, workspace, true);
 }
 
 Arrangement splitEdges(const std::vector<InputEdge>& edges,

@@ -36,6 +36,8 @@ void Workspace::recycleAll() {
   recycle(freeNodes);
   recycle(starting);
   recycle(through);
+  recycle(slabOrder);
+  recycle(slabEvents);
   recycle(path);
   recycle(next);
   recycle(clipped);
@@ -61,7 +63,7 @@ void Workspace::forEachLent(F f) {
 void Workspace::releaseSweepIfAbove(std::size_t bytes) {
   if (nodes.size() * sizeof(StatusNode) > bytes) std::deque<StatusNode>().swap(nodes);
   releaseEachAbove(bytes, freeNodes, pieces, pieceLines, exactRights, starts, sortedStarts, queue,
-                   eventPoints, freeEventPoints, starting, through);
+                   eventPoints, freeEventPoints, starting, through, slabOrder, slabEvents);
 }
 
 void Workspace::release() {
@@ -77,6 +79,8 @@ void Workspace::release() {
   std::vector<StatusNode*>().swap(freeNodes);
   std::vector<int>().swap(starting);
   std::vector<int>().swap(through);
+  std::vector<SlabEntry>().swap(slabOrder);
+  std::vector<SweepEvent>().swap(slabEvents);
   std::vector<ClipVertex>().swap(path);
   std::vector<ClipVertex>().swap(next);
   std::vector<ExactEdge>().swap(clipped);

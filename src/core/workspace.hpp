@@ -86,6 +86,15 @@ struct StatusNode {
   StatusNode* above = nullptr;  ///< the node next above it, null at the top
 };
 
+/// An active piece in a slab pass (split_edges.cpp): its height at the slab's right end x = X,
+/// num / dx with num = ay dx + dy (X - ax) (|num| < 2^63: coordinates within 2^30 units of the
+/// origin), and dx > 0 (no vertical piece spans a slab).
+struct SlabEntry {
+  std::int64_t num = 0;
+  std::int64_t dx = 1;
+  int piece = -1;
+};
+
 /// A vertex of a chain, as a place along it: ring index `j`, with `left` vertices of the chain
 /// after it (-1: past its last vertex).
 struct ChainCursor {
@@ -442,8 +451,10 @@ struct Workspace {
   /// Status node pool, as many as the status was ever wide (a deque: nodes never move).
   std::deque<StatusNode> nodes;
   std::vector<StatusNode*> freeNodes;
-  std::vector<int> starting;  ///< pieces starting at the current event point
-  std::vector<int> through;   ///< pieces through the current event point
+  std::vector<int> starting;           ///< pieces starting at the current event point
+  std::vector<int> through;            ///< pieces through the current event point
+  std::vector<SlabEntry> slabOrder;    ///< the active pieces of a slab pass
+  std::vector<SweepEvent> slabEvents;  ///< the crossings of a slab, sorted
   // Convex pre-clip (convex_clip.cpp, boolean_op.cpp).
   std::vector<ClipVertex> path, next;
   std::vector<ExactEdge> clipped;
