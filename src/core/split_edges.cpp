@@ -17,6 +17,7 @@
 //
 // Cost: O((n + k) log n) time for n edges and k intersection points, O(n + k) memory.
 #include <algorithm>
+#include <cstring>
 #include <limits>
 
 #include <boost/sort/pdqsort/pdqsort.hpp>
@@ -88,6 +89,9 @@ class Sweep {
         through_(ws.through),
         slabOrder_(ws.slabOrder),
         slabEvents_(ws.slabEvents),
+        slabKeys_(ws.slabKeys),
+        slabKeyScratch_(ws.slabKeyScratch),
+        slabEventScratch_(ws.slabEventScratch),
         nodes_(ws.nodes),
         freeNodes_(ws.freeNodes),
         status_(StatusLess{&pieces_}) {
@@ -752,13 +756,21 @@ class Sweep {
     return false;
   }
 
-  void checkCrossing(int a, int b, const XPoint& p) {
+  // Tests neighbours a (below) and b for a crossing ahead of p. In slab mode the slab pass finds
+  // every crossing of two pieces spanning a slab; only a vertical piece (on the current line)
+  // can meet a neighbour elsewhere. (Inline: in slab mode most calls end here.)
+  [[gnu::always_inline]] void checkCrossing(int a, int b, const XPoint& p) {
     if (a < 0 || b < 0) return;
+    if constexpr (kSlabs) {
+      const SweepPiece& pa = pieces_[std::size_t(a)];
+      const SweepPiece& pb = pieces_[std::size_t(b)];
+      if (slabMode_ && pa.ax != pa.bx && pb.ax != pb.bx) return;
+    }
+    testPair(a, b, p);
+  }
+  void testPair(int a, int b, const XPoint& p) {
     SweepPiece& pa = pieces_[a];
     const SweepPiece& pb = pieces_[b];
-    // In slab mode the slab pass finds every crossing of two pieces spanning a slab; only a
-    // vertical piece (on the current line) can meet a neighbour elsewhere.
-    if (kSlabs && slabMode_ && pa.ax != pa.bx && pb.ax != pb.bx) return;
     // a lies below b along the sweep (every caller passes a pair of neighbours in that order), so
     // their lines meet ahead of the sweep only if a rises faster than b: its direction turns
     // clockwise to b's. Parallel lines never meet, and a pair that crossed behind the sweep (re-
@@ -893,11 +905,64 @@ class Sweep {
       }
       slabOrder_[j] = e;
     }
-    boost::sort::pdqsort(slabEvents_.begin(), slabEvents_.end(),
-                         [this](const SweepEvent& a, const SweepEvent& b) {
-                           return eventAfter(b, a, eventPoints_);
-                         });
+    sortSlabEvents();
   }
+  // The slab's crossings in sweep order. By their cached x first: a radix sort of the x's
+  // ordered bits, over the 24 highest bits in which they differ, then an insertion sort by the
+  // exact order moves the few that the cached x leaves out of order (one comparison each where
+  // it does not). Crossings that share an x (a column of them on a slab's end) can leave it many
+  // moves: past 4n + 64 a comparison sort by the exact order takes over.
+  void sortSlabEvents() {
+    const std::size_t n = slabEvents_.size();
+    const auto exactly = [this](const SweepEvent& a, const SweepEvent& b) {
+      return eventAfter(b, a, eventPoints_);
+    };
+    if (n < kRadixSlabFrom) {
+      boost::sort::pdqsort(slabEvents_.begin(), slabEvents_.end(), exactly);
+      return;
+    }
+    slabKeys_.resize(n);
+    std::uint64_t differ = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      slabKeys_[i] = {orderedBits(slabEvents_[i].fx), std::uint32_t(i)};
+      differ |= slabKeys_[i].key ^ slabKeys_[0].key;
+    }
+    if (differ != 0) {
+      const unsigned high = 64U - unsigned(__builtin_clzll(differ));
+      radix::Digits digits;
+      radix::cutIntoDigits(high > 24 ? high - 24 : 0, high, 8, digits);
+      slabKeyScratch_.resize(n);
+      if (!radix::sortDigits(slabKeys_.data(), slabKeyScratch_.data(), n, digits)) {
+        slabKeys_.swap(slabKeyScratch_);
+      }
+    }
+    slabEventScratch_.resize(n);
+    for (std::size_t i = 0; i < n; ++i) slabEventScratch_[i] = slabEvents_[slabKeys_[i].index];
+    slabEvents_.swap(slabEventScratch_);
+    std::size_t moves = 0;
+    for (std::size_t i = 1; i < n; ++i) {
+      if (!eventAfter(slabEvents_[i - 1], slabEvents_[i], eventPoints_)) continue;
+      const SweepEvent e = slabEvents_[i];
+      std::size_t j = i;
+      do {
+        slabEvents_[j] = slabEvents_[j - 1];
+        --j;
+      } while (j > 0 && eventAfter(slabEvents_[j - 1], e, eventPoints_));
+      slabEvents_[j] = e;
+      moves += i - j;
+      if (moves > 4 * n + 64) {
+        boost::sort::pdqsort(slabEvents_.begin(), slabEvents_.end(), exactly);
+        return;
+      }
+    }
+  }
+  // The bits of x (not NaN) as an unsigned number in the order of x.
+  static std::uint64_t orderedBits(double x) {
+    std::uint64_t bits;
+    std::memcpy(&bits, &x, sizeof bits);
+    return (bits >> 63) != 0 ? ~bits : bits | (std::uint64_t{1} << 63);
+  }
+  static constexpr std::size_t kRadixSlabFrom = 64;  // fewer crossings: a comparison sort
   // Whether e lies below f just after the slab's right end.
   [[nodiscard]] bool lowerAtSlabEnd(const SlabEntry& e, const SlabEntry& f) const {
     const i128 l = i128(e.num) * f.dx, r = i128(f.num) * e.dx;
@@ -920,7 +985,7 @@ class Sweep {
   }
   // Slab mode from a slab whose crossings found were at least 1/16 of the active pieces, normal
   // mode from one with fewer than 1/64.
-  static constexpr std::uint64_t kEnterSlabs = 32, kLeaveSlabs = 128;
+  static constexpr std::uint64_t kEnterSlabs = 16, kLeaveSlabs = 64;
 
   const BooleanSpec& spec_;
   const PieceClassifier classifier_{spec_};  // stage 2 for every closed piece
@@ -943,7 +1008,10 @@ class Sweep {
   std::vector<int>& through_;
   std::vector<SlabEntry>& slabOrder_;
   std::vector<SweepEvent>& slabEvents_;  // the slab's crossings, sorted (slab mode)
-  std::size_t slabHead_ = 0;             // the first not visited
+  std::vector<SlabKey>& slabKeys_;       // their sort's keys and its second array
+  std::vector<SlabKey>& slabKeyScratch_;
+  std::vector<SweepEvent>& slabEventScratch_;
+  std::size_t slabHead_ = 0;    // the first not visited
   bool slabsAllowed_ = kSlabs;  // no open piece and no off-grid end: no piece starts in a slab
   bool slabMode_ = false;
   std::int64_t slabRight_ = std::numeric_limits<std::int64_t>::min();

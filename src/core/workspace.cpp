@@ -38,6 +38,9 @@ void Workspace::recycleAll() {
   recycle(through);
   recycle(slabOrder);
   recycle(slabEvents);
+  recycle(slabKeys);
+  recycle(slabKeyScratch);
+  recycle(slabEventScratch);
   recycle(path);
   recycle(next);
   recycle(clipped);
@@ -63,7 +66,8 @@ void Workspace::forEachLent(F f) {
 void Workspace::releaseSweepIfAbove(std::size_t bytes) {
   if (nodes.size() * sizeof(StatusNode) > bytes) std::deque<StatusNode>().swap(nodes);
   releaseEachAbove(bytes, freeNodes, pieces, pieceLines, exactRights, starts, sortedStarts, queue,
-                   eventPoints, freeEventPoints, starting, through, slabOrder, slabEvents);
+                   eventPoints, freeEventPoints, starting, through, slabOrder, slabEvents, slabKeys,
+                   slabKeyScratch, slabEventScratch);
 }
 
 void Workspace::release() {
@@ -81,6 +85,9 @@ void Workspace::release() {
   std::vector<int>().swap(through);
   std::vector<SlabEntry>().swap(slabOrder);
   std::vector<SweepEvent>().swap(slabEvents);
+  std::vector<SlabKey>().swap(slabKeys);
+  std::vector<SlabKey>().swap(slabKeyScratch);
+  std::vector<SweepEvent>().swap(slabEventScratch);
   std::vector<ClipVertex>().swap(path);
   std::vector<ClipVertex>().swap(next);
   std::vector<ExactEdge>().swap(clipped);
