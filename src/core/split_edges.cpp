@@ -496,7 +496,10 @@ class Sweep {
       std::swap(lo, hi);
       if (lo->above != hi) return false;
     }
-    if (secondEventAt(p) || !aloneAt(lo, hi, p)) return false;
+    // In slab mode a third piece through p crosses one of the two there, and that crossing is
+    // queued too (a slab's crossings all are; a vertical piece's with its neighbour is): the
+    // test of a second event covers it, without the neighbours' orientation tests.
+    if (secondEventAt(p) || (!(kSlabs && slabMode_) && !aloneAt(lo, hi, p))) return false;
     pop();
     crossingHere_ = {first, second};
     const int lower = lo->piece, upper = hi->piece;
