@@ -125,6 +125,7 @@ class Sweep {
     }
     // Edges with off-grid ends start from the event queue; their ends are plain events.
     slabsAllowed_ &= exactEdges.empty();
+    if (!slabsAllowed_) slabKeyEnd_ = kNoStartKey;  // no start key reaches it
     for (const ExactEdge& e : exactEdges) {
       const int id = int(pieces_.size());
       SweepPiece& a = pieces_.emplace_back();
@@ -303,11 +304,11 @@ class Sweep {
   // Events wait in two queues: the heap, and in slab mode the slab's crossings, sorted by the
   // slab pass (slabEvents_ from slabHead_ on). The earliest of both comes first.
   [[nodiscard]] bool anyEvent() const {
-    return !queue_.empty() || (kSlabs && slabHead_ < slabEvents_.size());
+    return !queue_.empty() || (kSlabs && slabHead_ < slabEnd_);
   }
   // Whether the earliest event is the slab list's (there is one).
   [[nodiscard]] bool slabFirst() const {
-    return kSlabs && slabHead_ < slabEvents_.size() &&
+    return kSlabs && slabHead_ < slabEnd_ &&
            (queue_.empty() || !eventAfter(slabEvents_[slabHead_], queue_.front(), eventPoints_));
   }
   // The earliest event (there is one).
@@ -348,7 +349,9 @@ class Sweep {
   // The next event point; pointKey_ is its start key when the next start lies there (the starts
   // at p are then the ones with that key), else a key no start has.
   bool nextPoint(XPoint& p) {
-    if (kSlabs && slabsAllowed_ && cursor_ < starts_.size()) startSlabIfDue();
+    if (kSlabs && cursor_ < starts_.size() && starts_[cursor_].key >= slabKeyEnd_) {
+      startSlabIfDue();
+    }
     const bool hasStart = cursor_ < starts_.size();
     pointKey_ = kNoStartKey;
     if (!hasStart && !anyEvent()) return false;
@@ -835,9 +838,17 @@ class Sweep {
   void startSlabIfDue() {
     const std::int64_t next = frame_.point(starts_[cursor_].key).x;
     if (next <= slabRight_) return;
+    // Normal mode without a crossing found since the last line: nothing to decide, and the
+    // events still queued before `next` can wait (the next decision waits for them).
+    if (!slabMode_ && crossings_ == crossingsAtSlab_) {
+      moveLine(next);
+      return;
+    }
     if (anyEvent() && !beyondLine(top())) return;
     const std::uint64_t found = crossings_ - crossingsAtSlab_;
-    const bool dense = found * (slabMode_ ? kLeaveSlabs : kEnterSlabs) >= std::uint64_t(active_);
+    // An empty status (before the first piece, between separate contours) is no slab to judge.
+    const bool dense =
+        active_ > 0 && found * (slabMode_ ? kLeaveSlabs : kEnterSlabs) >= std::uint64_t(active_);
     if (dense != slabMode_) {
       if (dense) {
         enterSlabs();
@@ -848,8 +859,17 @@ class Sweep {
     crossingsAtSlab_ = crossings_;
     slabEvents_.clear();  // every one visited
     slabHead_ = 0;
-    if (slabMode_) slabPass(next);
-    slabRight_ = next;
+    slabEnd_ = 0;
+    if (slabMode_) {
+      slabPass(next);
+      slabEnd_ = slabEvents_.size();
+    }
+    moveLine(next);
+  }
+  // The line x = slabRight_ moves to x; starts beyond it have keys from slabKeyEnd_ on.
+  void moveLine(std::int64_t x) {
+    slabRight_ = x;
+    slabKeyEnd_ = std::uint64_t(x + 1 - frame_.minX) << 32;
   }
   // Whether event ev lies beyond the line x = slabRight_ (no event lies before it).
   [[nodiscard]] bool beyondLine(const SweepEvent& ev) const {
@@ -859,12 +879,14 @@ class Sweep {
     return compareCoord(q.x, q.w, slabRight_, 1) > 0;
   }
   [[nodiscard]] StatusNode* bottom() { return status_.empty() ? nullptr : &*status_.begin(); }
-  // Into slab mode: the queued crossings go (slab passes find them again, each in its slab).
+  // Into slab mode: the queued crossings go (slab passes find them again, each in its slab, and
+  // count them again for Limits::maxCrossings).
   void enterSlabs() {
     std::size_t kept = 0;
     for (const SweepEvent& ev : queue_) {
       if (ev.through >= 0) {
         freeEventPoints_.push_back(ev.point);
+        --crossings_;
       } else {
         queue_[kept++] = ev;
       }
@@ -1014,8 +1036,10 @@ class Sweep {
   std::vector<SlabKey>& slabKeys_;       // their sort's keys and its second array
   std::vector<SlabKey>& slabKeyScratch_;
   std::vector<SweepEvent>& slabEventScratch_;
-  std::size_t slabHead_ = 0;    // the first not visited
-  bool slabsAllowed_ = kSlabs;  // no open piece and no off-grid end: no piece starts in a slab
+  std::size_t slabHead_ = 0;      // the first not visited
+  std::size_t slabEnd_ = 0;       // slabEvents_.size(), kept here for the tests of every event
+  bool slabsAllowed_ = kSlabs;    // no open piece and no off-grid end: no piece starts in a slab
+  std::uint64_t slabKeyEnd_ = 0;  // start keys beyond the line x = slabRight_ (moveLine())
   bool slabMode_ = false;
   std::int64_t slabRight_ = std::numeric_limits<std::int64_t>::min();
   std::uint64_t crossingsAtSlab_ = 0;  // crossings_ when the slab began
