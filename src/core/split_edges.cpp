@@ -119,13 +119,14 @@ class Sweep {
       a.setLine(e.a, e.b);
       a.contribution[e.operand] = e.open ? 0 : e.direction;
       a.open = e.open;
-      if constexpr (kSlabs) slabsAllowed_ &= !e.open;
+      if constexpr (kSlabs) {
+        if (e.open) slabKeyEnd_ = kNoStartKey;  // an open piece: no slab mode (sweepEdges())
+      }
       starts_.push_back({frame_.key(e.a), id, false});
       starts_.push_back({frame_.key(e.b), id, true});
     }
     // Edges with off-grid ends start from the event queue; their ends are plain events.
-    slabsAllowed_ &= exactEdges.empty();
-    if (!slabsAllowed_) slabKeyEnd_ = kNoStartKey;  // no start key reaches it
+    if (!exactEdges.empty()) slabKeyEnd_ = kNoStartKey;  // an off-grid end: no slab mode
     for (const ExactEdge& e : exactEdges) {
       const int id = int(pieces_.size());
       SweepPiece& a = pieces_.emplace_back();
@@ -833,11 +834,11 @@ class Sweep {
   // instead of testing new neighbours (slab mode); it switches at the x of input vertices, by the
   // crossings found in the slab before.
 
-  // At the first point beyond the line x = slabRight_ (its starts and events all visited): the
-  // mode for the slab up to the next start's x, and that slab's pass in slab mode.
+  // Called while the next start lies beyond the line x = slabRight_ (its key from slabKeyEnd_
+  // on). Once the line's events are all visited: the mode for the slab up to that start's x,
+  // and in slab mode that slab's pass.
   void startSlabIfDue() {
     const std::int64_t next = frame_.point(starts_[cursor_].key).x;
-    if (next <= slabRight_) return;
     // Normal mode without a crossing found since the last line: nothing to decide, and the
     // events still queued before `next` can wait (the next decision waits for them).
     if (!slabMode_ && crossings_ == crossingsAtSlab_) {
@@ -899,12 +900,11 @@ class Sweep {
   // neighbours is tested afresh, as in a sweep that starts here.
   void leaveSlabs() {
     slabMode_ = false;
-    for (StatusNode* n = bottom(); n != nullptr; n = n->above) {
-      pieces_[std::size_t(n->piece)].checkedAbove.fill(-1);
-    }
     const XPoint line(IPoint{slabRight_, Grid::kMaxUnits});  // at or after every visited point
-    for (StatusNode* n = bottom(); n != nullptr && n->above != nullptr; n = n->above) {
-      checkCrossing(n->piece, n->above->piece, line);
+    for (StatusNode* n = bottom(); n != nullptr; n = n->above) {
+      // A pair is remembered by its lower piece, which is cleared before its test.
+      pieces_[std::size_t(n->piece)].checkedAbove.fill(-1);
+      if (n->above != nullptr) checkCrossing(n->piece, n->above->piece, line);
     }
   }
   // Queues every crossing of two active pieces in the slab from x = slabRight_ (excluded) to x
@@ -1038,7 +1038,6 @@ class Sweep {
   std::vector<SweepEvent>& slabEventScratch_;
   std::size_t slabHead_ = 0;      // the first not visited
   std::size_t slabEnd_ = 0;       // slabEvents_.size(), kept here for the tests of every event
-  bool slabsAllowed_ = kSlabs;    // no open piece and no off-grid end: no piece starts in a slab
   std::uint64_t slabKeyEnd_ = 0;  // start keys beyond the line x = slabRight_ (moveLine())
   bool slabMode_ = false;
   std::int64_t slabRight_ = std::numeric_limits<std::int64_t>::min();
