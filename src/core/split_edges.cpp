@@ -167,7 +167,14 @@ class Sweep {
 
   Arrangement run() {
     XPoint p;
-    while (nextPoint(p)) visit(p);
+    while (true) {
+      if constexpr (kSlabs) {
+        if (cursor_ < starts_.size() && starts_[cursor_].key >= slabKeyEnd_) startSlabIfDue();
+        if (slabHead_ < slabEnd_) visitSlabCrossings();
+      }
+      if (!nextPoint(p)) break;
+      visit(p);
+    }
     if (!status_.empty()) throw InternalError("splitEdges: sweep ended with active pieces");
     out_.crossings = crossings_;
     out_.slabPasses = slabPasses_;
@@ -350,9 +357,6 @@ class Sweep {
   // The next event point; pointKey_ is its start key when the next start lies there (the starts
   // at p are then the ones with that key), else a key no start has.
   bool nextPoint(XPoint& p) {
-    if (kSlabs && cursor_ < starts_.size() && starts_[cursor_].key >= slabKeyEnd_) {
-      startSlabIfDue();
-    }
     const bool hasStart = cursor_ < starts_.size();
     pointKey_ = kNoStartKey;
     if (!hasStart && !anyEvent()) return false;
@@ -506,6 +510,14 @@ class Sweep {
     if (secondEventAt(p) || (!(kSlabs && slabMode_) && !aloneAt(lo, hi, p))) return false;
     pop();
     crossingHere_ = {first, second};
+    const int below = swapAt(lo, hi, p);
+    checkCrossing(below, lo->piece, p);
+    checkCrossing(hi->piece, pieceIn(hi->above), p);
+    return true;
+  }
+  // The pieces in the adjacent nodes lo (below) and hi cross at p, alone there: both end at p
+  // and go on past it swapped, each taking the other's node. Returns the piece below lo.
+  [[gnu::always_inline]] int swapAt(StatusNode* lo, StatusNode* hi, const XPoint& p) {
     const int lower = lo->piece, upper = hi->piece;
     SweepPiece& a = pieces_[std::size_t(lower)];
     SweepPiece& b = pieces_[std::size_t(upper)];
@@ -521,9 +533,34 @@ class Sweep {
     b.node = lo;
     hi->piece = lower;
     a.node = hi;
-    checkCrossing(below, upper, p);
-    checkCrossing(lower, pieceIn(hi->above), p);
-    return true;
+    return below;
+  }
+  // Slab mode: the slab's crossings strictly inside it (before the line x = slabRight_, where
+  // every start and every queued event lies), each alone at its point, in the sorted list's
+  // order, without the general event loop. No vertical piece is active inside a slab (the slab
+  // pass checks), so no pair needs a test. Stops at the first crossing it cannot take so: the
+  // loop visits that one.
+  void visitSlabCrossings() {
+    XPoint p;
+    while (slabHead_ < slabEnd_) {
+      const SweepEvent& ev = slabEvents_[slabHead_];
+      if (compareCachedInBox(ev.fx, double(slabRight_)) >= 0) return;
+      if (!queue_.empty() && !eventAfter(queue_.front(), ev, eventPoints_)) return;
+      StatusNode *lo = pieces_[std::size_t(ev.through)].node,
+                 *hi = pieces_[std::size_t(ev.other)].node;
+      if (lo == nullptr || hi == nullptr) return;
+      if (lo->above != hi) {
+        std::swap(lo, hi);
+        if (lo->above != hi) return;
+      }
+      p = eventPoint(ev, eventPoints_);
+      if (slabEventAt(slabHead_ + 1, p)) return;
+      vertex_ = -1;
+      crossingHere_ = {ev.through, ev.other};
+      freeEventPoints_.push_back(ev.point);
+      ++slabHead_;
+      swapAt(lo, hi, p);
+    }
   }
 
   // Takes every start and queued event at p: pieces starting at p go to starting_. Returns a
