@@ -89,8 +89,8 @@ class Sweep {
         through_(ws.through),
         slabOrder_(ws.slabOrder),
         slabEvents_(ws.slabEvents),
-        slabKeys_(ws.slabKeys),
-        slabKeyScratch_(ws.slabKeyScratch),
+        slabBuckets_(ws.slabBuckets),
+        slabBucketStarts_(ws.slabBucketStarts),
         slabEventScratch_(ws.slabEventScratch),
         nodes_(ws.nodes),
         freeNodes_(ws.freeNodes),
@@ -969,37 +969,46 @@ class Sweep {
     }
     sortSlabEvents();
   }
-  // The slab's crossings in sweep order. By their cached x first: a radix sort of the x's
-  // ordered bits, over the 24 highest bits in which they differ, then an insertion sort by the
-  // exact order moves the few that the cached x leaves out of order (one comparison each where
-  // it does not). Crossings that share an x (a column of them on a slab's end) can leave it many
-  // moves: past 4n + 64 a comparison sort by the exact order takes over.
+  // The slab's crossings in sweep order. By their cached x first: a bucket sort into n buckets
+  // of equal width between the least and the greatest x (a slab's crossings spread along it,
+  // a few to a bucket), then an insertion sort by the exact order moves the few that the
+  // buckets leave out of order (one comparison each where it does not). Crossings that crowd
+  // into a few buckets (a column of them on a slab's end) can leave it many moves: past 4n + 64
+  // a comparison sort by the exact order takes over.
   void sortSlabEvents() {
     const std::size_t n = slabEvents_.size();
     const auto exactly = [this](const SweepEvent& a, const SweepEvent& b) {
       return eventAfter(b, a, eventPoints_);
     };
-    if (n < kRadixSlabFrom) {
+    double least = slabEvents_.empty() ? 0.0 : slabEvents_[0].fx, greatest = least;
+    for (const SweepEvent& e : slabEvents_) {
+      least = std::min(least, e.fx);
+      greatest = std::max(greatest, e.fx);
+    }
+    if (n < kBucketSlabFrom || !(greatest > least)) {
       boost::sort::pdqsort(slabEvents_.begin(), slabEvents_.end(), exactly);
       return;
     }
-    slabKeys_.resize(n);
-    std::uint64_t differ = 0;
+    // Monotone in x (a difference, a product and a truncation, each monotone): a later bucket
+    // never holds an earlier x.
+    const double perBucket = double(n) / (greatest - least);
+    slabBuckets_.resize(n);
+    slabBucketStarts_.assign(n, 0);
     for (std::size_t i = 0; i < n; ++i) {
-      slabKeys_[i] = {orderedBits(slabEvents_[i].fx), std::uint32_t(i)};
-      differ |= slabKeys_[i].key ^ slabKeys_[0].key;
+      const std::size_t b = std::min(std::size_t((slabEvents_[i].fx - least) * perBucket), n - 1);
+      slabBuckets_[i] = std::uint32_t(b);
+      ++slabBucketStarts_[b];
     }
-    if (differ != 0) {
-      const unsigned high = 64U - unsigned(__builtin_clzll(differ));
-      radix::Digits digits;
-      radix::cutIntoDigits(high > 24 ? high - 24 : 0, high, 8, digits);
-      slabKeyScratch_.resize(n);
-      if (!radix::sortDigits(slabKeys_.data(), slabKeyScratch_.data(), n, digits)) {
-        slabKeys_.swap(slabKeyScratch_);
-      }
+    std::uint32_t sum = 0;
+    for (std::uint32_t& start : slabBucketStarts_) {
+      const std::uint32_t count = start;
+      start = sum;
+      sum += count;
     }
     slabEventScratch_.resize(n);
-    for (std::size_t i = 0; i < n; ++i) slabEventScratch_[i] = slabEvents_[slabKeys_[i].index];
+    for (std::size_t i = 0; i < n; ++i) {
+      slabEventScratch_[slabBucketStarts_[slabBuckets_[i]]++] = slabEvents_[i];
+    }
     slabEvents_.swap(slabEventScratch_);
     std::size_t moves = 0;
     for (std::size_t i = 1; i < n; ++i) {
@@ -1018,13 +1027,7 @@ class Sweep {
       }
     }
   }
-  // The bits of x (not NaN) as an unsigned number in the order of x.
-  static std::uint64_t orderedBits(double x) {
-    std::uint64_t bits;
-    std::memcpy(&bits, &x, sizeof bits);
-    return (bits >> 63) != 0 ? ~bits : bits | (std::uint64_t{1} << 63);
-  }
-  static constexpr std::size_t kRadixSlabFrom = 64;  // fewer crossings: a comparison sort
+  static constexpr std::size_t kBucketSlabFrom = 64;  // fewer crossings: a comparison sort
   // Whether e lies below f just after the slab's right end.
   [[nodiscard]] bool lowerAtSlabEnd(const SlabEntry& e, const SlabEntry& f) const {
     const i128 l = i128(e.num) * f.dx, r = i128(f.num) * e.dx;
@@ -1069,9 +1072,9 @@ class Sweep {
   std::vector<int>& starting_;
   std::vector<int>& through_;
   std::vector<SlabEntry>& slabOrder_;
-  std::vector<SweepEvent>& slabEvents_;  // the slab's crossings, sorted (slab mode)
-  std::vector<SlabKey>& slabKeys_;       // their sort's keys and its second array
-  std::vector<SlabKey>& slabKeyScratch_;
+  std::vector<SweepEvent>& slabEvents_;           // the slab's crossings, sorted (slab mode)
+  std::vector<std::uint32_t>& slabBuckets_;       // their sort's bucket of each
+  std::vector<std::uint32_t>& slabBucketStarts_;  // and where each bucket starts
   std::vector<SweepEvent>& slabEventScratch_;
   std::size_t slabHead_ = 0;      // the first not visited
   std::size_t slabEnd_ = 0;       // slabEvents_.size(), kept here for the tests of every event

@@ -38,8 +38,8 @@ void Workspace::recycleAll() {
   recycle(through);
   recycle(slabOrder);
   recycle(slabEvents);
-  recycle(slabKeys);
-  recycle(slabKeyScratch);
+  recycle(slabBuckets);
+  recycle(slabBucketStarts);
   recycle(slabEventScratch);
   recycle(path);
   recycle(next);
@@ -66,8 +66,8 @@ void Workspace::forEachLent(F f) {
 void Workspace::releaseSweepIfAbove(std::size_t bytes) {
   if (nodes.size() * sizeof(StatusNode) > bytes) std::deque<StatusNode>().swap(nodes);
   releaseEachAbove(bytes, freeNodes, pieces, pieceLines, exactRights, starts, sortedStarts, queue,
-                   eventPoints, freeEventPoints, starting, through, slabOrder, slabEvents, slabKeys,
-                   slabKeyScratch, slabEventScratch);
+                   eventPoints, freeEventPoints, starting, through, slabOrder, slabEvents,
+                   slabBuckets, slabBucketStarts, slabEventScratch);
 }
 
 void Workspace::release() {
@@ -85,8 +85,8 @@ void Workspace::release() {
   std::vector<int>().swap(through);
   std::vector<SlabEntry>().swap(slabOrder);
   std::vector<SweepEvent>().swap(slabEvents);
-  std::vector<SlabKey>().swap(slabKeys);
-  std::vector<SlabKey>().swap(slabKeyScratch);
+  std::vector<std::uint32_t>().swap(slabBuckets);
+  std::vector<std::uint32_t>().swap(slabBucketStarts);
   std::vector<SweepEvent>().swap(slabEventScratch);
   std::vector<ClipVertex>().swap(path);
   std::vector<ClipVertex>().swap(next);

@@ -95,13 +95,6 @@ struct SlabEntry {
   int piece = -1;
 };
 
-/// A slab crossing's place in the radix sort of a slab's crossings (split_edges.cpp): the ordered
-/// bits of its cached x, and its index.
-struct SlabKey {
-  std::uint64_t key = 0;
-  std::uint32_t index = 0;
-};
-
 /// A vertex of a chain, as a place along it: ring index `j`, with `left` vertices of the chain
 /// after it (-1: past its last vertex).
 struct ChainCursor {
@@ -458,12 +451,13 @@ struct Workspace {
   /// Status node pool, as many as the status was ever wide (a deque: nodes never move).
   std::deque<StatusNode> nodes;
   std::vector<StatusNode*> freeNodes;
-  std::vector<int> starting;                      ///< pieces starting at the current event point
-  std::vector<int> through;                       ///< pieces through the current event point
-  std::vector<SlabEntry> slabOrder;               ///< the active pieces of a slab pass
-  std::vector<SweepEvent> slabEvents;             ///< the crossings of a slab, sorted
-  std::vector<SlabKey> slabKeys, slabKeyScratch;  ///< their sort's keys and its second array
-  std::vector<SweepEvent> slabEventScratch;       ///< the sort's second array of crossings
+  std::vector<int> starting;                    ///< pieces starting at the current event point
+  std::vector<int> through;                     ///< pieces through the current event point
+  std::vector<SlabEntry> slabOrder;             ///< the active pieces of a slab pass
+  std::vector<SweepEvent> slabEvents;           ///< the crossings of a slab, sorted
+  std::vector<std::uint32_t> slabBuckets;       ///< their sort's bucket of each crossing
+  std::vector<std::uint32_t> slabBucketStarts;  ///< and where each bucket starts
+  std::vector<SweepEvent> slabEventScratch;     ///< the sort's second array of crossings
   // Convex pre-clip (convex_clip.cpp, boolean_op.cpp).
   std::vector<ClipVertex> path, next;
   std::vector<ExactEdge> clipped;

@@ -173,14 +173,51 @@ double pieceLength(const detail::Arrangement& a) {
   return sum;
 }
 
+// The arrangement of subject and clipPaths (null: a simplify) with slab mode against the one
+// without: every kept piece's winding numbers are the exact ones on its sides, the vertices of
+// both are in sweep order, and the kept pieces are the plain sweep's (the same length, at
+// vertices it has too). Returns the slab passes.
+std::uint64_t expectSlabsKeepThePlainPieces(const Paths& subject, const Paths* clipPaths,
+                                            detail::BooleanSpec how) {
+  const detail::Arrangement slabs = stages::arrange(subject, clipPaths, how);
+  how.slabs = false;
+  const detail::Arrangement plain = stages::arrange(subject, clipPaths, how);
+  EXPECT_EQ(plain.slabPasses, 0u);
+  EXPECT_GT(slabs.pieces.size(), 20u);
+  EXPECT_EQ(slabs.windings.size(), slabs.pieces.size());
+  const double eps = 1.0 / double(1 << 20);
+  for (std::size_t k = 0; k < slabs.pieces.size() && k < slabs.windings.size(); ++k) {
+    const auto [below, above] = stages::sidePoints(slabs, slabs.pieces[k], eps);
+    EXPECT_EQ(testing::exactWinding(subject, below), slabs.windings[k].windBelow[0]) << k;
+    EXPECT_EQ(testing::exactWinding(subject, above), slabs.windings[k].windAbove()[0]) << k;
+    if (clipPaths != nullptr) {
+      EXPECT_EQ(testing::exactWinding(*clipPaths, below), slabs.windings[k].windBelow[1]) << k;
+      EXPECT_EQ(testing::exactWinding(*clipPaths, above), slabs.windings[k].windAbove()[1]) << k;
+    }
+  }
+  // Vertex ids follow the sweep order, i.e. the points' lexicographic order.
+  for (const detail::Arrangement* a : {&slabs, &plain}) {
+    std::size_t v = 1;
+    while (v < a->vertices.size() &&
+           detail::compareInBox(a->point(int(v - 1)), a->point(int(v))) < 0) {
+      ++v;
+    }
+    EXPECT_EQ(v, std::max<std::size_t>(a->vertices.size(), 1)) << "vertex " << v << " out of order";
+  }
+  const double length = pieceLength(plain);
+  EXPECT_NEAR(pieceLength(slabs), length, 1e-9 * length);
+  const std::set<std::string> have = reducedVertexNames(slabs);
+  const std::set<std::string> all = reducedVertexNames(plain);
+  EXPECT_TRUE(std::includes(all.begin(), all.end(), have.begin(), have.end()));
+  return slabs.slabPasses;
+}
+
 // Slab mode (split_edges.cpp) finds a slab's crossings from the order of its pieces at the
 // slab's right end, where the sweep otherwise tests each new pair of neighbours. Random polygons
 // on a coarse grid (crossings on slab ends, three or more pieces through one point, collinear
-// overlaps, vertical edges) and on a fine one (dozens of crossings a slab): every kept piece's
-// winding numbers of both operands are the exact ones on its sides, and the kept pieces are the
-// ones of the sweep without slab mode: the same length, at vertices it has too. (It may have
-// more: a crossing queued for a piece that a cancelling overlap then drops is still visited,
-// and the piece that crossed there is cut at it.)
+// overlaps, vertical edges) and on a fine one (dozens of crossings a slab) keep the plain
+// sweep's pieces. (The plain sweep may have more vertices: a crossing queued for a piece that a
+// cancelling overlap then drops is still visited, and the piece that crossed there is cut at it.)
 TEST(StageSplitEdges, SlabModeKeepsThePiecesOfTheSweepWithoutIt) {
   struct Case {
     unsigned seed;
@@ -199,32 +236,41 @@ TEST(StageSplitEdges, SlabModeKeepsThePiecesOfTheSweepWithoutIt) {
         SCOPED_TRACE("seed " + std::to_string(c.seed) + " " + toString(rule) + " " + toString(op));
         detail::BooleanSpec how = stages::clipWith(op);
         how.subjectRule = how.clipRule = rule;
-        const detail::Arrangement slabs = stages::arrange(subject, &clipPaths, how);
-        how.slabs = false;
-        const detail::Arrangement plain = stages::arrange(subject, &clipPaths, how);
-        EXPECT_EQ(plain.slabPasses, 0u);
-        passes += slabs.slabPasses;
-        ASSERT_GT(slabs.pieces.size(), 20u);
-        ASSERT_EQ(slabs.windings.size(), slabs.pieces.size());
-        const double eps = 1.0 / double(1 << 20);
-        for (std::size_t k = 0; k < slabs.pieces.size(); ++k) {
-          const auto [below, above] = stages::sidePoints(slabs, slabs.pieces[k], eps);
-          EXPECT_EQ(testing::exactWinding(subject, below), slabs.windings[k].windBelow[0]) << k;
-          EXPECT_EQ(testing::exactWinding(subject, above), slabs.windings[k].windAbove()[0]) << k;
-          EXPECT_EQ(testing::exactWinding(clipPaths, below), slabs.windings[k].windBelow[1]) << k;
-          EXPECT_EQ(testing::exactWinding(clipPaths, above), slabs.windings[k].windAbove()[1]) << k;
-        }
-        const double length = pieceLength(plain);
-        EXPECT_NEAR(pieceLength(slabs), length, 1e-9 * length);
-        const std::set<std::string> have = reducedVertexNames(slabs);
-        const std::set<std::string> all = reducedVertexNames(plain);
-        EXPECT_TRUE(std::includes(all.begin(), all.end(), have.begin(), have.end()));
+        passes += expectSlabsKeepThePlainPieces(subject, &clipPaths, how);
       }
     }
   }
   // Slab mode was taken (a sweep enters it after a slab with crossings for a sixteenth of its
   // pieces).
   EXPECT_GT(passes, 100u);
+}
+
+// A slab whose crossings crowd together: the bucket sort of a slab's crossings by cached x
+// leaves them to the exact sorts after it. A column of bow-ties between x = 0 and x = 2000, one
+// above the other, each crossing once: the sweep finds their crossings at x = 0 (one per two
+// pieces: slab mode for the slab to x = 2000). With `spread`, the crossings lie at x = 1000 -
+// j / 16 for bow-tie j and one more bow-tie crosses at x = 10: the others fill the last few of
+// the slab's buckets, each in the reverse of the exact order (the slab pass finds them bottom to
+// top), so the insertion pass exceeds its moves and the comparison sort takes over. Without, all
+// cross at x = 1000: one cached x, the comparison sort at once.
+TEST(StageSplitEdges, SlabCrossingsCrowdedOnOneXAreSortedExactly) {
+  constexpr int kBowTies = 200;
+  for (const bool spread : {true, false}) {
+    SCOPED_TRACE(spread ? "spread" : "one x");
+    Paths subject;
+    for (int j = 0; j <= kBowTies; ++j) {
+      // Rising at slope 8 from (0, y), falling at slope 8 from (0, y + d): they cross at
+      // x = d / 16.
+      const int y = 20000 * j;
+      const int d = !spread ? 16000 : j == kBowTies ? 160 : 16000 - j;
+      subject.push_back(
+          {Point(0, y), Point(2000, y + 16000), Point(2000, y + d - 16000), Point(0, y + d)});
+    }
+    for (FillRule rule : {FillRule::EvenOdd, FillRule::NonZero}) {
+      SCOPED_TRACE(toString(rule));
+      EXPECT_EQ(expectSlabsKeepThePlainPieces(subject, nullptr, stages::simplifyWith(rule)), 1u);
+    }
+  }
 }
 
 // Long steep edges at the edge of the coordinate range cross a vertical edge: the crossings
