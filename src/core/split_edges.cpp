@@ -954,7 +954,8 @@ class Sweep {
       const SweepPiece& a = pieces_[std::size_t(n->piece)];
       const std::int64_t dx = std::int64_t(a.bx) - a.ax, dy = std::int64_t(a.by) - a.ay;
       if (dx == 0) throw InternalError("splitEdges: a vertical piece spans a slab");
-      slabOrder_.push_back({std::int64_t(a.ay) * dx + dy * (x - a.ax), dx, n->piece});
+      const std::int64_t num = std::int64_t(a.ay) * dx + dy * (x - a.ax);
+      slabOrder_.push_back({num, dx, double(num) / double(dx), n->piece});
     }
     const std::size_t n = slabOrder_.size();
     for (std::size_t i = 1; i < n; ++i) {
@@ -1030,6 +1031,8 @@ class Sweep {
   static constexpr std::size_t kBucketSlabFrom = 64;  // fewer crossings: a comparison sort
   // Whether e lies below f just after the slab's right end.
   [[nodiscard]] bool lowerAtSlabEnd(const SlabEntry& e, const SlabEntry& f) const {
+    const int c = compareCachedInBox(e.height, f.height);
+    if (c != 0) return c < 0;
     const i128 l = i128(e.num) * f.dx, r = i128(f.num) * e.dx;
     if (l != r) return l < r;
     return crossSign(pieces_[std::size_t(e.piece)].direction(),

@@ -88,10 +88,12 @@ struct StatusNode {
 
 /// An active piece in a slab pass (split_edges.cpp): its height at the slab's right end x = X,
 /// num / dx with num = ay dx + dy (X - ax) (|num| < 2^63: coordinates within 2^30 units of the
-/// origin), and dx > 0 (no vertical piece spans a slab).
+/// origin), and dx > 0 (no vertical piece spans a slab); `height` is the quotient as a double
+/// (within 2^-52 of it, relative: a cached double in the grid's range, compareCachedInBox()).
 struct SlabEntry {
   std::int64_t num = 0;
   std::int64_t dx = 1;
+  double height = 0;
   int piece = -1;
 };
 
