@@ -94,7 +94,7 @@ class Sweep {
         slabEventScratch_(ws.slabEventScratch),
         nodes_(ws.nodes),
         freeNodes_(ws.freeNodes),
-        status_(StatusLess{&pieces_}) {
+        status_() {
     const std::size_t total = edges.size() + exactEdges.size();
     // The status links pieces by address: the array must not move while the sweep runs.
     pieces_.clear();
@@ -182,27 +182,12 @@ class Sweep {
   }
 
  private:
-  // Order of active pieces along the sweep line, bottom to top. Pieces in the status never cross
-  // to the left of the sweep point, so comparing where the later-starting piece begins against
-  // the other's supporting line is enough.
-  struct StatusLess {
-    const std::vector<SweepPiece>* pieces;
-    bool operator()(const StatusNode& na, const StatusNode& nb) const {
-      const SweepPiece& pa = (*pieces)[std::size_t(na.piece)];
-      const SweepPiece& pb = (*pieces)[std::size_t(nb.piece)];
-      const int c = compareInBox(pa.left, pb.left);
-      int o = 0;
-      if (c < 0) {
-        o = orientInBox(pa.lineA(), pa.lineB(), pb.left);
-      } else if (c > 0) {
-        o = -orientInBox(pb.lineA(), pb.lineB(), pa.left);
-      }
-      if (o != 0) return o > 0;
-      const int s = crossSign(pa.direction(), pb.direction());
-      if (s != 0) return s > 0;
-      // Coincident: the (single, merged) closed piece below the open ones, as visit() labels.
-      return pa.open != pb.open ? pb.open : na.piece < nb.piece;
-    }
+  // The status is kept in order by position: every node goes in next to its neighbour
+  // (linkBelow(), insert_before()) and searches compare a point against the pieces (PointLess),
+  // so the tree never compares two nodes: no order of its own to keep consistent (a piece's
+  // left end, which such an order would read, is kept for open pieces only).
+  struct PositionOnly {
+    bool operator()(const StatusNode&, const StatusNode&) const = delete;
   };
   // Piece below point / point below piece, for finding the pieces through a point.
   struct PointLess {
@@ -218,7 +203,7 @@ class Sweep {
   };
   using Status = boost::intrusive::set<
       StatusNode, boost::intrusive::member_hook<StatusNode, StatusHook, &StatusNode::hook>,
-      boost::intrusive::compare<StatusLess>, boost::intrusive::constant_time_size<false>>;
+      boost::intrusive::compare<PositionOnly>, boost::intrusive::constant_time_size<false>>;
 
   // Links node x into the status just below node `at` (null: at the top): the tree by position
   // (no comparison) and the neighbour links.
@@ -523,8 +508,6 @@ class Sweep {
     SweepPiece& b = pieces_[std::size_t(upper)];
     closeAt(a, p);
     closeAt(b, p);
-    a.left = p;
-    b.left = p;
     const int below = pieceIn(lo->below);
     Labels at = labelsAbove(below);
     labelStarting(b, at, p);
@@ -631,7 +614,7 @@ class Sweep {
       closeAt(a, p);
       if (a.open) out_.openPieces.push_back({i, a.left, p, a.place});
       if (!endsAt(a, p)) {
-        a.left = p;
+        if (a.open) a.left = p;
         starting_.push_back(i);
       }
     }
@@ -778,10 +761,7 @@ class Sweep {
         SweepPiece& other = pieces_[starting_[j]];
         for (int k = 0; k < kOperands; ++k) pieces_[first].contribution[k] += other.contribution[k];
         const XPoint firstRight = rightOf(pieces_[first]);
-        if (!endsAt(other, firstRight)) {
-          other.left = firstRight;
-          push(other.left, starting_[j]);
-        }
+        if (!endsAt(other, firstRight)) push(firstRight, starting_[j]);
         ++j;
       }
       if (!cancels(first)) starting_[kept++] = first;

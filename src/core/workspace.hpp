@@ -311,6 +311,8 @@ struct WeilerScratch {
 
 /// A piece of an input edge while the sweep has it (split_edges.cpp).
 struct SweepPiece : LabelledSegment {
+  /// An open piece's left end (for Arrangement::openPieces). A closed piece's is not kept: the
+  /// sweep reads a closed piece's line and right end only.
   XPoint left;
   /// Its right end's cached x, which decides most comparisons with it (exactRight below).
   double rightFx = 0;
