@@ -80,6 +80,7 @@ class Sweep {
       : spec_(spec),
         pieces_(ws.pieces),
         pieceLines_(ws.pieceLines),
+        openLefts_(ws.openLefts),
         exactRights_(ws.exactRights),
         starts_(ws.starts),
         queue_(ws.queue),
@@ -100,6 +101,7 @@ class Sweep {
     pieces_.clear();
     pieces_.reserve(total);
     pieceLines_.assign(total, -1);
+    openLefts_.clear();
     exactRights_.clear();
     exactRights_.reserve(exactEdges.size());
     starts_.clear();
@@ -110,15 +112,18 @@ class Sweep {
     nodes_.clear();
     freeNodes_.clear();
     starts_.reserve(total * 2);  // exact edges with grid ends start here too
-    // Each piece is built in place: a copy of its 160 bytes cost as much as building it.
+    // Each piece is built in place: a copy of its 96 bytes cost as much as building it.
     for (const InputEdge& e : edges) {
       const int id = int(pieces_.size());
       SweepPiece& a = pieces_.emplace_back();
-      a.left = XPoint(e.a);
       a.rightFx = double(e.b.x);
       a.setLine(e.a, e.b);
       a.contribution[e.operand] = e.open ? 0 : e.direction;
       a.open = e.open;
+      if (e.open) {
+        if (openLefts_.empty()) openLefts_.resize(total);
+        openLefts_[std::size_t(id)] = XPoint(e.a);
+      }
       if constexpr (kSlabs) {
         if (e.open) slabKeyEnd_ = kNoStartKey;  // an open piece: no slab mode (sweepEdges())
       }
@@ -130,7 +135,6 @@ class Sweep {
     for (const ExactEdge& e : exactEdges) {
       const int id = int(pieces_.size());
       SweepPiece& a = pieces_.emplace_back();
-      a.left = e.left;
       a.exactRight = int(exactRights_.size());
       a.rightFx = e.right.fx;
       exactRights_.push_back(e.right);
@@ -185,7 +189,7 @@ class Sweep {
   // The status is kept in order by position: every node goes in next to its neighbour
   // (linkBelow(), insert_before()) and searches compare a point against the pieces (PointLess),
   // so the tree never compares two nodes: no order of its own to keep consistent (a piece's
-  // left end, which such an order would read, is kept for open pieces only).
+  // left end, which such an order would read, is kept for open pieces only: openLefts_).
   struct PositionOnly {
     bool operator()(const StatusNode&, const StatusNode&) const = delete;
   };
@@ -612,9 +616,9 @@ class Sweep {
     for (int i : through_) {
       SweepPiece& a = pieces_[i];
       closeAt(a, p);
-      if (a.open) out_.openPieces.push_back({i, a.left, p, a.place});
+      if (a.open) out_.openPieces.push_back({i, openLefts_[std::size_t(i)], p, a.place});
       if (!endsAt(a, p)) {
-        if (a.open) a.left = p;
+        if (a.open) openLefts_[std::size_t(i)] = p;
         starting_.push_back(i);
       }
     }
@@ -1042,6 +1046,7 @@ class Sweep {
   std::array<int, 2> crossingHere_{-1, -1};  // two pieces crossing at the current event point
   std::vector<SweepPiece>& pieces_;
   std::vector<int>& pieceLines_;
+  std::vector<XPoint>& openLefts_;
   std::vector<XPoint>& exactRights_;
   std::vector<SweepStart>& starts_;
   const StartFrame frame_;  // the grid range's corner

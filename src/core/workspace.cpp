@@ -23,6 +23,7 @@ void Workspace::recycleAll() {
   overlaps.forEach([](auto& v) { recycle(v); });
   recycle(pieces);
   recycle(exactRights);
+  recycle(openLefts);
   recycle(starts);
   recycle(sortedStarts);
   recycle(queue);
@@ -65,14 +66,15 @@ void Workspace::forEachLent(F f) {
 
 void Workspace::releaseSweepIfAbove(std::size_t bytes) {
   if (nodes.size() * sizeof(StatusNode) > bytes) std::deque<StatusNode>().swap(nodes);
-  releaseEachAbove(bytes, freeNodes, pieces, pieceLines, exactRights, starts, sortedStarts, queue,
-                   eventPoints, freeEventPoints, starting, through, slabOrder, slabEvents,
-                   slabBuckets, slabBucketStarts, slabEventScratch);
+  releaseEachAbove(bytes, freeNodes, pieces, pieceLines, openLefts, exactRights, starts,
+                   sortedStarts, queue, eventPoints, freeEventPoints, starting, through, slabOrder,
+                   slabEvents, slabBuckets, slabBucketStarts, slabEventScratch);
 }
 
 void Workspace::release() {
   std::vector<SweepPiece>().swap(pieces);
   std::vector<int>().swap(pieceLines);
+  std::vector<XPoint>().swap(openLefts);
   std::vector<XPoint>().swap(exactRights);
   std::vector<SweepStart>().swap(starts);
   std::vector<SweepStart>().swap(sortedStarts);

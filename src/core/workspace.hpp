@@ -311,9 +311,6 @@ struct WeilerScratch {
 
 /// A piece of an input edge while the sweep has it (split_edges.cpp).
 struct SweepPiece : LabelledSegment {
-  /// An open piece's left end (for Arrangement::openPieces). A closed piece's is not kept: the
-  /// sweep reads a closed piece's line and right end only.
-  XPoint left;
   /// Its right end's cached x, which decides most comparisons with it (exactRight below).
   double rightFx = 0;
   StatusNode* node = nullptr;  ///< its status node while in the status, else null
@@ -331,7 +328,7 @@ struct SweepPiece : LabelledSegment {
   LinePlace place = LinePlace::Outside;  ///< open pieces: where it lies
   [[nodiscard]] int nearestResult() const { return slot >= 0 ? slot : resultBelow; }
 };
-static_assert(sizeof(SweepPiece) == 160, "one per input edge, all live through the sweep");
+static_assert(sizeof(SweepPiece) == 96, "one per input edge, all live through the sweep");
 
 /// An input edge end on the grid, sorted once before the sweep. The point is stored as a sort
 /// key relative to the sweep's corner (min x, min y of the grid ends): (x - minX) << 32 |
@@ -445,8 +442,12 @@ struct Workspace {
   // Sweep (split_edges.cpp).
   std::vector<SweepPiece> pieces;
   /// Each piece's line in the arrangement's lines once a vertex refers to it, else -1 (apart
-  /// from SweepPiece, which stays at 160 bytes).
+  /// from SweepPiece, which stays at 96 bytes).
   std::vector<int> pieceLines;
+  /// The left end of each open piece, by piece id (for Arrangement::openPieces; empty without
+  /// open pieces). A closed piece's left end is not kept: the sweep reads its line and right
+  /// end only.
+  std::vector<XPoint> openLefts;
   std::vector<XPoint> exactRights;               ///< the right ends of the pieces of exact edges
   std::vector<SweepStart> starts, sortedStarts;  ///< sortedStarts: the sort's second array
   std::vector<SweepEvent> queue;                 ///< a binary heap, earliest point first
