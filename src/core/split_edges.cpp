@@ -514,8 +514,10 @@ class Sweep {
     closeAt(b, p);
     const int below = pieceIn(lo->below);
     Labels at = labelsAbove(below);
+    // Above both, the winding numbers are the same before and after the swap.
+    const int insideAboveBoth = b.insideAbove ? 1 : 0;
     labelStarting(b, at, p);
-    labelStarting(a, at, p);
+    labelStarting(a, at, p, insideAboveBoth);
     lo->piece = upper;
     b.node = lo;
     hi->piece = lower;
@@ -644,13 +646,17 @@ class Sweep {
       const SweepPiece& b = pieces_[std::size_t(below)];
       at.wind = b.windAbove();
       at.resultBelow = b.nearestResult();
+      at.inside = b.insideAbove;
+    } else {
+      at.inside = insideOutside_;
     }
-    at.inside = classifier_.inside(at.wind);
     return at;
   }
   // Labels piece a, starting at p just above `at`, keeps it when it bounds the result, and moves
   // `at` to just above it.
-  [[gnu::always_inline]] void labelStarting(SweepPiece& a, Labels& at, const XPoint& p) {
+  // insideAbove: stage 2's answer just above it where the caller knows it, else -1.
+  [[gnu::always_inline]] void labelStarting(SweepPiece& a, Labels& at, const XPoint& p,
+                                            int insideAbove = -1) {
     a.windBelow = compact(at.wind);
     a.resultBelow = at.resultBelow;
     a.slot = -1;
@@ -658,7 +664,8 @@ class Sweep {
     // Stage 2 (classify): whether the piece bounds the result, and on which side; the side
     // above is the next piece's side below.
     const bool in = at.inside;
-    at.inside = classifier_.inside(at.wind);
+    at.inside = insideAbove >= 0 ? insideAbove != 0 : classifier_.inside(at.wind);
+    a.insideAbove = at.inside;
     const Side side = a.open || !spec_.keepBoundary ? Side::None : sideBetween(in, at.inside);
     if (side != Side::None) {
       a.slot = int(out_.pieces.size());
@@ -1040,8 +1047,9 @@ class Sweep {
   static constexpr std::uint64_t kEnterSlabs = 16, kLeaveSlabs = 64;
 
   const BooleanSpec& spec_;
-  const PieceClassifier classifier_{spec_};  // stage 2 for every closed piece
-  std::uint64_t crossings_ = 0;              // crossings found so far (Limits::maxCrossings)
+  const PieceClassifier classifier_{spec_};                    // stage 2 for every closed piece
+  const bool insideOutside_ = classifier_.inside(Windings{});  // below every piece
+  std::uint64_t crossings_ = 0;  // crossings found so far (Limits::maxCrossings)
   int vertex_ = -1;
   std::array<int, 2> crossingHere_{-1, -1};  // two pieces crossing at the current event point
   std::vector<SweepPiece>& pieces_;

@@ -325,6 +325,9 @@ struct SweepPiece : LabelledSegment {
   std::array<int, 8> checkedAbove{-1, -1, -1, -1, -1, -1, -1, -1};
   std::uint8_t checkedNext = 0;
   bool open = false;  ///< a piece of an open polyline (zero contribution, never merged)
+  /// Whether the result holds the points just above it (stage 2 on windAbove()), set when it
+  /// is labelled: the next piece above reads it instead of asking stage 2 again.
+  bool insideAbove = false;
   LinePlace place = LinePlace::Outside;  ///< open pieces: where it lies
   [[nodiscard]] int nearestResult() const { return slot >= 0 ? slot : resultBelow; }
 };
