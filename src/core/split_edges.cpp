@@ -940,14 +940,19 @@ class Sweep {
   // or meets another there and goes on lower, crossed it in the slab.
   void slabPass(std::int64_t x) {
     ++slabPasses_;
-    slabOrder_.clear();
+    // Written in place, one entry per active piece (active_ counts them; checked).
+    slabOrder_.resize(std::size_t(active_));
+    SlabEntry* entry = slabOrder_.data();
+    SlabEntry* const end = entry + slabOrder_.size();
     for (const StatusNode* n = bottom(); n != nullptr; n = n->above) {
       const SweepPiece& a = pieces_[std::size_t(n->piece)];
       const std::int64_t dx = std::int64_t(a.bx) - a.ax, dy = std::int64_t(a.by) - a.ay;
       if (dx == 0) throw InternalError("splitEdges: a vertical piece spans a slab");
+      if (entry == end) throw InternalError("splitEdges: a slab's pieces miscounted");
       const std::int64_t num = std::int64_t(a.ay) * dx + dy * (x - a.ax);
-      slabOrder_.push_back({num, dx, double(num) / double(dx), n->piece});
+      *entry++ = {num, dx, double(num) / double(dx), n->piece};
     }
+    if (entry != end) throw InternalError("splitEdges: a slab's pieces miscounted");
     const std::size_t n = slabOrder_.size();
     for (std::size_t i = 1; i < n; ++i) {
       const SlabEntry e = slabOrder_[i];
