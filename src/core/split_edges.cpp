@@ -17,7 +17,6 @@
 //
 // Cost: O((n + k) log n) time for n edges and k intersection points, O(n + k) memory.
 #include <algorithm>
-#include <cstring>
 #include <limits>
 
 #include <boost/sort/pdqsort/pdqsort.hpp>
@@ -525,10 +524,10 @@ class Sweep {
     return below;
   }
   // Slab mode: the slab's crossings strictly inside it (before the line x = slabRight_, where
-  // every start and every queued event lies), each alone at its point, in the sorted list's
-  // order, without the general event loop. No vertical piece is active inside a slab (the slab
-  // pass checks), so no pair needs a test. Stops at the first crossing it cannot take so: the
-  // loop visits that one.
+  // the next start lies), each before the heap's first event and alone at its point, in the
+  // sorted list's order, without the general event loop. No vertical piece is active inside a
+  // slab (the slab pass checks), so no pair needs a test. Stops at the first crossing it cannot
+  // take so: the loop visits that one.
   void visitSlabCrossings() {
     XPoint p;
     while (slabHead_ < slabEnd_) {
@@ -986,13 +985,14 @@ class Sweep {
       boost::sort::pdqsort(slabEvents_.begin(), slabEvents_.end(), exactly);
       return;
     }
-    // Monotone in x (a difference, a product and a truncation, each monotone): a later bucket
-    // never holds an earlier x.
-    const double perBucket = double(n) / (greatest - least);
+    // Monotone in x (a difference, a product, a minimum and a truncation, each monotone): a
+    // later bucket never holds an earlier x. The minimum is taken before the conversion, so an
+    // x a rounding beyond n (or a quotient beyond any size) converts within range.
+    const double perBucket = double(n) / (greatest - least), last = double(n - 1);
     slabBuckets_.resize(n);
     slabBucketStarts_.assign(n, 0);
     for (std::size_t i = 0; i < n; ++i) {
-      const std::size_t b = std::min(std::size_t((slabEvents_[i].fx - least) * perBucket), n - 1);
+      const auto b = std::size_t(std::min((slabEvents_[i].fx - least) * perBucket, last));
       slabBuckets_[i] = std::uint32_t(b);
       ++slabBucketStarts_[b];
     }
