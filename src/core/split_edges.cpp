@@ -18,6 +18,7 @@
 // Cost: O((n + k) log n) time for n edges and k intersection points, O(n + k) memory.
 #include <algorithm>
 #include <limits>
+#include <optional>
 
 #include <boost/sort/pdqsort/pdqsort.hpp>
 
@@ -514,7 +515,7 @@ class Sweep {
     const int below = pieceIn(lo->below);
     Labels at = labelsAbove(below);
     // Above both, the winding numbers are the same before and after the swap.
-    const int insideAboveBoth = b.insideAbove ? 1 : 0;
+    const bool insideAboveBoth = b.insideAbove;
     labelStarting(b, at, p);
     labelStarting(a, at, p, insideAboveBoth);
     lo->piece = upper;
@@ -653,9 +654,10 @@ class Sweep {
   }
   // Labels piece a, starting at p just above `at`, keeps it when it bounds the result, and moves
   // `at` to just above it.
-  // insideAbove: stage 2's answer just above it where the caller knows it, else -1.
+  // knownAbove: stage 2's answer just above it where the caller knows it (the same winding
+  // numbers as above a piece it replaces).
   [[gnu::always_inline]] void labelStarting(SweepPiece& a, Labels& at, const XPoint& p,
-                                            int insideAbove = -1) {
+                                            std::optional<bool> knownAbove = std::nullopt) {
     a.windBelow = compact(at.wind);
     a.resultBelow = at.resultBelow;
     a.slot = -1;
@@ -663,7 +665,7 @@ class Sweep {
     // Stage 2 (classify): whether the piece bounds the result, and on which side; the side
     // above is the next piece's side below.
     const bool in = at.inside;
-    at.inside = insideAbove >= 0 ? insideAbove != 0 : classifier_.inside(at.wind);
+    at.inside = knownAbove ? *knownAbove : classifier_.inside(at.wind);
     a.insideAbove = at.inside;
     const Side side = a.open || !spec_.keepBoundary ? Side::None : sideBetween(in, at.inside);
     if (side != Side::None) {
@@ -939,6 +941,8 @@ class Sweep {
   // or meets another there and goes on lower, crossed it in the slab.
   void slabPass(std::int64_t x) {
     ++slabPasses_;
+    slabLeast_ = std::numeric_limits<double>::infinity();
+    slabGreatest_ = -slabLeast_;
     // Written in place, one entry per active piece (active_ counts them; checked).
     slabOrder_.resize(std::size_t(active_));
     SlabEntry* entry = slabOrder_.data();
@@ -976,11 +980,7 @@ class Sweep {
     const auto exactly = [this](const SweepEvent& a, const SweepEvent& b) {
       return eventAfter(b, a, eventPoints_);
     };
-    double least = slabEvents_.empty() ? 0.0 : slabEvents_[0].fx, greatest = least;
-    for (const SweepEvent& e : slabEvents_) {
-      least = std::min(least, e.fx);
-      greatest = std::max(greatest, e.fx);
-    }
+    const double least = slabLeast_, greatest = slabGreatest_;
     if (n < kBucketSlabFrom || !(greatest > least)) {
       boost::sort::pdqsort(slabEvents_.begin(), slabEvents_.end(), exactly);
       return;
@@ -1046,6 +1046,8 @@ class Sweep {
     if (atGridPoint(x, a.lineB()) || atGridPoint(x, b.lineB())) return;
     countCrossing();
     slabEvents_.push_back({x.fx, x.fy, storePoint(x), -1, lower, upper});
+    slabLeast_ = std::min(slabLeast_, x.fx);
+    slabGreatest_ = std::max(slabGreatest_, x.fx);
   }
   // Slab mode from a slab whose crossings found were at least 1/16 of the active pieces, normal
   // mode from one with fewer than 1/64.
@@ -1077,7 +1079,8 @@ class Sweep {
   std::vector<std::uint32_t>& slabBuckets_;       // their sort's bucket of each
   std::vector<std::uint32_t>& slabBucketStarts_;  // and where each bucket starts
   std::vector<SweepEvent>& slabEventScratch_;
-  std::size_t slabHead_ = 0;      // the first not visited
+  double slabLeast_ = 0, slabGreatest_ = 0;  // the least and greatest cached x of its crossings
+  std::size_t slabHead_ = 0;                 // the first not visited
   std::size_t slabEnd_ = 0;       // slabEvents_.size(), kept here for the tests of every event
   std::uint64_t slabKeyEnd_ = 0;  // start keys beyond the line x = slabRight_ (moveLine())
   bool slabMode_ = false;
