@@ -222,9 +222,10 @@ inline int compareCached(double da, double db) {
 /// compareCached() for coordinates known to lie within the grid's range, |a|, |b| <=
 /// Grid::kMaxUnits = 2^30, as every point of the sweep does (input points, and crossings of
 /// segments between them): a static bound, two subtractions and two comparisons. Each cached
-/// double is then within 2^-51 * 2^30 = 2^-21 of its exact value, so |(a - b) - (da - db)| <=
-/// 2^-20, and a rounded difference beyond 2^-18 (also rounded by at most 2^-53 of itself) has
-/// the sign of a - b.
+/// double is then within 2^-51 * 2^30 = 2^-21 of its exact value; a slab crossing's (the sweep's
+/// slabCrossing(), from the parameter along a line) within 2^-20 + 2^-23. So |(a - b) - (da -
+/// db)| <= 2.25 * 2^-20, the rounding of da - db (below 2^31 + 1) adds at most 2^-22, and a
+/// rounded difference beyond 2^-18 = 4 * 2^-20 has the sign of a - b.
 constexpr double kCachedInBoxBound = 0x1p-18;
 inline int compareCachedInBox(double da, double db) {
   static_assert(Grid::kMaxUnits <= (std::int64_t{1} << 30), "the bound below assumes 2^30");
@@ -256,7 +257,7 @@ inline bool less(const XPoint& a, const XPoint& b) { return compare(a, b) < 0; }
 /// every point of the sweep is (input points, and crossings of segments between them): the
 /// cached doubles are filtered with compareCachedInBox()'s static bound instead of a relative
 /// one. Exact: the filter answers only beyond its proven bound, the numerators otherwise.
-inline int compareInBox(const XPoint& a, const XPoint& b) {
+[[gnu::always_inline]] inline int compareInBox(const XPoint& a, const XPoint& b) {
   if (a.w == b.w) {
     if (a.x != b.x) return a.x < b.x ? -1 : 1;
     return (a.y > b.y) - (a.y < b.y);

@@ -31,33 +31,6 @@
 namespace roiclip::detail {
 namespace {
 
-// The exact point of an event: its coordinates from the pool, its cached doubles.
-inline XPoint eventPoint(const SweepEvent& e, const std::vector<ExactCoords>& points) {
-  const ExactCoords& c = points[std::size_t(e.point)];
-  XPoint p;
-  p.x = c.x;
-  p.y = c.y;
-  p.w = c.w;
-  p.fx = e.fx;
-  p.fy = e.fy;
-  return p;
-}
-
-// Whether event a comes after event b. The events' cached x decides almost every comparison
-// (every sweep point lies within the grid's range: compareCachedInBox(), whose test this is,
-// written so that the decided case is one predictable branch and a flag, not a second branch
-// on the order); the rest compare the exact points in the pool.
-[[gnu::noinline]] bool eventAfterExact(const SweepEvent& a, const SweepEvent& b,
-                                       const std::vector<ExactCoords>& points) {
-  return a.point != b.point && lessInBox(eventPoint(b, points), eventPoint(a, points));
-}
-inline bool eventAfter(const SweepEvent& a, const SweepEvent& b,
-                       const std::vector<ExactCoords>& points) {
-  const double d = a.fx - b.fx;  // exactly -(b.fx - a.fx): compareCachedInBox()'s two tests
-  if (__builtin_expect(std::fabs(d) > kCachedInBoxBound, 1)) return d > 0;
-  return eventAfterExact(a, b, points);
-}
-
 // Every vertex lies within the grid's range, so ArrangementVertex or PackedPoint holds it: a
 // sweep that made one beyond has a bug.
 [[noreturn, gnu::noinline, gnu::cold]] void vertexBeyondRange() {
@@ -252,6 +225,46 @@ class Sweep {
                             : equalInBox(exactRights_[std::size_t(a.exactRight)], p);
   }
 
+  // The exact point of an event: from the pool with the event's cached doubles, or for a slab's
+  // crossing (kOnLines: slabCrossing()) worked out from its two pieces' lines, with the tighter
+  // cached doubles of any XPoint.
+  [[nodiscard, gnu::always_inline]] XPoint eventPoint(const SweepEvent& e) const {
+    if (kSlabs && e.point == kOnLines) return crossingOfLines(e.through, e.other);
+    const ExactCoords& c = eventPoints_[std::size_t(e.point)];
+    XPoint p;
+    p.x = c.x;
+    p.y = c.y;
+    p.w = c.w;
+    p.fx = e.fx;
+    p.fy = e.fy;
+    return p;
+  }
+  // The crossing of pieces i and j's lines, exactly (their lines cross: a slab found it).
+  [[nodiscard, gnu::noinline]] XPoint crossingOfLines(int i, int j) const {
+    const SweepPiece& a = pieces_[std::size_t(i)];
+    const SweepPiece& b = pieces_[std::size_t(j)];
+    XPoint x;
+    if (!lineIntersection(a.lineA(), a.lineB(), b.lineA(), b.lineB(), x)) {
+      throw InternalError("splitEdges: parallel pieces swapped in a slab");
+    }
+    return x;
+  }
+  // Whether event a comes after event b. The events' cached x decides almost every comparison
+  // (every sweep point lies within the grid's range: compareCachedInBox(), whose test this is,
+  // written so that the decided case is one predictable branch and a flag, not a second branch
+  // on the order); the rest compare the exact points.
+  [[nodiscard]] bool eventAfter(const SweepEvent& a, const SweepEvent& b) const {
+    const double d = a.fx - b.fx;  // exactly -(b.fx - a.fx): compareCachedInBox()'s two tests
+    if (__builtin_expect(std::fabs(d) > kCachedInBoxBound, 1)) return d > 0;
+    return eventAfterExact(a, b);
+  }
+  [[nodiscard, gnu::noinline]] bool eventAfterExact(const SweepEvent& a,
+                                                    const SweepEvent& b) const {
+    if (a.point >= 0 && a.point == b.point) return false;  // one stored point
+    const XPoint p = eventPoint(b), q = eventPoint(a);
+    return compareInBox(p, q) < 0;
+  }
+
   // x must not lie in eventPoints_ (it may move).
   void push(const XPoint& x, int pieceId, int through = -1, int other = -1) {
     const int slot = storePoint(x);
@@ -274,7 +287,7 @@ class Sweep {
   void placeFrom(std::size_t hole, const SweepEvent& ev) {
     while (hole > 0) {
       const std::size_t parent = (hole - 1) / 2;
-      if (!eventAfter(queue_[parent], ev, eventPoints_)) break;
+      if (!eventAfter(queue_[parent], ev)) break;
       queue_[hole] = queue_[parent];
       hole = parent;
     }
@@ -291,8 +304,7 @@ class Sweep {
     if (n == 0) return;
     std::size_t hole = 0;
     for (std::size_t child = 1; child < n; child = 2 * hole + 1) {
-      if (child + 1 < n)
-        child += std::size_t(eventAfter(queue_[child], queue_[child + 1], eventPoints_));
+      if (child + 1 < n) child += std::size_t(eventAfter(queue_[child], queue_[child + 1]));
       queue_[hole] = queue_[child];
       hole = child;
     }
@@ -306,23 +318,23 @@ class Sweep {
   // Whether the earliest event is the slab list's (there is one).
   [[nodiscard]] bool slabFirst() const {
     return kSlabs && slabHead_ < slabEnd_ &&
-           (queue_.empty() || !eventAfter(slabEvents_[slabHead_], queue_.front(), eventPoints_));
+           (queue_.empty() || !eventAfter(slabEvents_[slabHead_], queue_.front()));
   }
   // The earliest event (there is one).
   [[nodiscard]] const SweepEvent& top() const {
     return slabFirst() ? slabEvents_[slabHead_] : queue_.front();
   }
-  [[nodiscard]] XPoint topPoint() const { return eventPoint(top(), eventPoints_); }
+  [[nodiscard]] XPoint topPoint() const { return eventPoint(top()); }
   void pop() {
     if (slabFirst()) {
-      freeEventPoints_.push_back(slabEvents_[slabHead_++].point);
+      ++slabHead_;  // a slab's crossings keep no stored point (kOnLines)
     } else {
       popHeap();
     }
   }
   // Whether ev lies at p (which lies within the grid's range, as every sweep point).
   [[nodiscard]] bool isAt(const SweepEvent& ev, const XPoint& p) const {
-    return compareCachedInBox(ev.fx, p.fx) == 0 && equalInBox(eventPoint(ev, eventPoints_), p);
+    return compareCachedInBox(ev.fx, p.fx) == 0 && equalInBox(eventPoint(ev), p);
   }
   // Whether the heap's event at index i (none there: false) lies at p.
   [[nodiscard]] bool heapEventAt(std::size_t i, const XPoint& p) const {
@@ -376,17 +388,37 @@ class Sweep {
       constexpr double kBound = double(ArrangementVertex::kGridBound);
       out_.vertices.push_back(p.w == 1 && std::fabs(p.fx) <= kBound && std::fabs(p.fy) <= kBound
                                   ? ArrangementVertex::grid(gridPoint(p))
-                                  : offGridVertex(p));
+                                  : offGridVertex(&p));
+    }
+    return vertex_;
+  }
+  // A slab's crossing as a direct visit takes it: its cached doubles (SweepEvent::fx, fy).
+  struct SlabCrossingAt {
+    double fx, fy;
+  };
+  // The same for a slab's crossing in a direct visit, worked out exactly only where it may be a
+  // grid point (rare): its cached doubles lie within 2^-19 of its coordinates (slabCrossing()),
+  // so a grid point's lie within 2^-19 of integers.
+  int vertexHere(const SlabCrossingAt& c) {
+    if (vertex_ < 0) {
+      const auto nearInteger = [](double v) { return std::fabs(v - roundToUnits(v)) <= 0x1p-19; };
+      if (nearInteger(c.fx) && nearInteger(c.fy)) {
+        return vertexHere(crossingOfLines(crossingHere_[0], crossingHere_[1]));
+      }
+      vertex_ = int(out_.vertices.size());
+      out_.vertices.push_back(offGridVertex(nullptr));
     }
     return vertex_;
   }
   // p off the grid as the arrangement keeps it: where two crossing pieces met at p, the crossing
   // of their lines; else (an exact edge's end) the exact point.
-  [[gnu::noinline]] ArrangementVertex offGridVertex(const XPoint& p) {
+  // (p null: the crossing of crossingHere_'s lines, worked out here where needed.)
+  [[gnu::noinline]] ArrangementVertex offGridVertex(const XPoint* at) {
     if (crossingHere_[0] >= 0) {
       const std::int64_t line1 = lineOf(crossingHere_[0]), line2 = lineOf(crossingHere_[1]);
       if (line1 <= ArrangementVertex::kMaxIndex) return ArrangementVertex::crossing(line1, line2);
     }
+    const XPoint p = at != nullptr ? *at : crossingOfLines(crossingHere_[0], crossingHere_[1]);
     if (!PackedPoint::representable(p) ||
         out_.offGrid.size() > std::size_t(ArrangementVertex::kMaxIndex)) {
       vertexBeyondRange();
@@ -506,7 +538,8 @@ class Sweep {
   }
   // The pieces in the adjacent nodes lo (below) and hi cross at p, alone there: both end at p
   // and go on past it swapped, each taking the other's node. Returns the piece below lo.
-  [[gnu::always_inline]] int swapAt(StatusNode* lo, StatusNode* hi, const XPoint& p) {
+  template <class At>
+  [[gnu::always_inline]] int swapAt(StatusNode* lo, StatusNode* hi, const At& p) {
     const int lower = lo->piece, upper = hi->piece;
     SweepPiece& a = pieces_[std::size_t(lower)];
     SweepPiece& b = pieces_[std::size_t(upper)];
@@ -530,11 +563,10 @@ class Sweep {
   // slab (the slab pass checks), so no pair needs a test. Stops at the first crossing it cannot
   // take so: the loop visits that one.
   void visitSlabCrossings() {
-    XPoint p;
     while (slabHead_ < slabEnd_) {
       const SweepEvent& ev = slabEvents_[slabHead_];
       if (compareCachedInBox(ev.fx, double(slabRight_)) >= 0) return;
-      if (!queue_.empty() && !eventAfter(queue_.front(), ev, eventPoints_)) return;
+      if (!queue_.empty() && !eventAfter(queue_.front(), ev)) return;
       StatusNode *lo = pieces_[std::size_t(ev.through)].node,
                  *hi = pieces_[std::size_t(ev.other)].node;
       if (lo == nullptr || hi == nullptr) return;
@@ -542,11 +574,16 @@ class Sweep {
         std::swap(lo, hi);
         if (lo->above != hi) return;
       }
-      p = eventPoint(ev, eventPoints_);
-      if (slabEventAt(slabHead_ + 1, p)) return;
+      if (slabHead_ + 1 < slabEnd_) {  // the next crossing at the same point: the loop's
+        const SweepEvent& next = slabEvents_[slabHead_ + 1];
+        if (compareCachedInBox(next.fx, ev.fx) == 0 &&
+            equalInBox(eventPoint(next), eventPoint(ev))) {
+          return;
+        }
+      }
       vertex_ = -1;
       crossingHere_ = {ev.through, ev.other};
-      freeEventPoints_.push_back(ev.point);
+      const SlabCrossingAt p{ev.fx, ev.fy};
       ++slabHead_;
       swapAt(lo, hi, p);
     }
@@ -627,7 +664,8 @@ class Sweep {
   }
 
   // Piece a leaves the status at p: its result piece, if any, ends there.
-  [[gnu::always_inline]] void closeAt(SweepPiece& a, const XPoint& p) {
+  template <class At>
+  [[gnu::always_inline]] void closeAt(SweepPiece& a, const At& p) {
     a.node = nullptr;
     if (a.slot >= 0) out_.pieces[a.slot].right = vertexHere(p);
   }
@@ -656,7 +694,8 @@ class Sweep {
   // `at` to just above it.
   // knownAbove: stage 2's answer just above it where the caller knows it (the same winding
   // numbers as above a piece it replaces).
-  [[gnu::always_inline]] void labelStarting(SweepPiece& a, Labels& at, const XPoint& p,
+  template <class At>
+  [[gnu::always_inline]] void labelStarting(SweepPiece& a, Labels& at, const At& p,
                                             std::optional<bool> knownAbove = std::nullopt) {
     a.windBelow = compact(at.wind);
     a.resultBelow = at.resultBelow;
@@ -905,7 +944,7 @@ class Sweep {
   [[nodiscard]] bool beyondLine(const SweepEvent& ev) const {
     const int c = compareCachedInBox(ev.fx, double(slabRight_));
     if (c != 0) return c > 0;
-    const ExactCoords& q = eventPoints_[std::size_t(ev.point)];
+    const XPoint q = eventPoint(ev);
     return compareCoord(q.x, q.w, slabRight_, 1) > 0;
   }
   [[nodiscard]] StatusNode* bottom() { return status_.empty() ? nullptr : &*status_.begin(); }
@@ -961,7 +1000,7 @@ class Sweep {
       const SlabEntry e = slabOrder_[i];
       std::size_t j = i;
       while (j > 0 && lowerAtSlabEnd(e, slabOrder_[j - 1])) {
-        crossInSlab(slabOrder_[j - 1].piece, e.piece);
+        slabCrossing(slabOrder_[j - 1].piece, e.piece, x);
         slabOrder_[j] = slabOrder_[j - 1];
         --j;
       }
@@ -978,7 +1017,7 @@ class Sweep {
   void sortSlabEvents() {
     const std::size_t n = slabEvents_.size();
     const auto exactly = [this](const SweepEvent& a, const SweepEvent& b) {
-      return eventAfter(b, a, eventPoints_);
+      return eventAfter(b, a);
     };
     const double least = slabLeast_, greatest = slabGreatest_;
     if (n < kBucketSlabFrom || !(greatest > least)) {
@@ -1009,13 +1048,13 @@ class Sweep {
     slabEvents_.swap(slabEventScratch_);
     std::size_t moves = 0;
     for (std::size_t i = 1; i < n; ++i) {
-      if (!eventAfter(slabEvents_[i - 1], slabEvents_[i], eventPoints_)) continue;
+      if (!eventAfter(slabEvents_[i - 1], slabEvents_[i])) continue;
       const SweepEvent e = slabEvents_[i];
       std::size_t j = i;
       do {
         slabEvents_[j] = slabEvents_[j - 1];
         --j;
-      } while (j > 0 && eventAfter(slabEvents_[j - 1], e, eventPoints_));
+      } while (j > 0 && eventAfter(slabEvents_[j - 1], e));
       slabEvents_[j] = e;
       moves += i - j;
       if (moves > 4 * n + 64) {
@@ -1034,20 +1073,41 @@ class Sweep {
     return crossSign(pieces_[std::size_t(e.piece)].direction(),
                      pieces_[std::size_t(f.piece)].direction()) > 0;
   }
-  // Pieces lower (below upper in the status) and upper cross in the slab: their lines' crossing,
-  // unless it is the right end of one of them (an input vertex, whose visit cuts the other).
-  void crossInSlab(int lower, int upper) {
+  // Pieces lower (below upper in the status) and upper cross in the slab that ends at x: their
+  // lines' crossing is queued, unless it is the right end of one of them (an input vertex, whose
+  // visit cuts the other). Its exact point is not worked out here (kOnLines): a direct visit
+  // needs it only where it may be a grid point, and the rest only where cached doubles cannot
+  // decide. Those doubles come from the crossing's parameter along the lower piece's line,
+  // t = num / den in [0, 1] (the pieces span the slab, so their crossing lies on both): each of
+  // num, den (exact) rounded once, the quotient once, dx t and ax + dx t once each. With |dx| <=
+  // 2^31 and |ax + dx t| <= 2^30 (grid range) that is within 2^31 * 4 * 2^-53 + 2^30 * 2^-53 =
+  // 2^-20 + 2^-23 of the exact coordinate (terms of order 2^-70 aside), the same for y. That is
+  // more than XPoint's 2^-21, and still inside compareCachedInBox()'s bound: two such values
+  // are off by at most 2.25 * 2^-20 together, their rounded difference by 2^-22 more, and the
+  // filter answers only beyond 2^-18 = 4 * 2^-20.
+  void slabCrossing(int lower, int upper, std::int64_t x) {
     const SweepPiece& a = pieces_[std::size_t(lower)];
     const SweepPiece& b = pieces_[std::size_t(upper)];
-    XPoint x;
-    if (!lineIntersection(a.lineA(), a.lineB(), b.lineA(), b.lineB(), x)) {
-      throw InternalError("splitEdges: parallel pieces swapped in a slab");
+    const std::int64_t d1x = std::int64_t(a.bx) - a.ax, d1y = std::int64_t(a.by) - a.ay;
+    const std::int64_t d2x = std::int64_t(b.bx) - b.ax, d2y = std::int64_t(b.by) - b.ay;
+    const std::int64_t cx = std::int64_t(b.ax) - a.ax, cy = std::int64_t(b.ay) - a.ay;
+    i128 den = i128(d1x) * d2y - i128(d1y) * d2x;
+    if (den == 0) throw InternalError("splitEdges: parallel pieces swapped in a slab");
+    i128 num = i128(cx) * d2y - i128(cy) * d2x;
+    if (den < 0) {
+      den = -den;
+      num = -num;
     }
-    if (atGridPoint(x, a.lineB()) || atGridPoint(x, b.lineB())) return;
+    const double t = toDouble(num) / toDouble(den);
+    const double fx = double(a.ax) + double(d1x) * t, fy = double(a.ay) + double(d1y) * t;
+    if (compareCachedInBox(fx, double(x)) >= 0) {  // perhaps on the line x: the exact test
+      const XPoint p = crossingOfLines(lower, upper);
+      if (atGridPoint(p, a.lineB()) || atGridPoint(p, b.lineB())) return;
+    }
     countCrossing();
-    slabEvents_.push_back({x.fx, x.fy, storePoint(x), -1, lower, upper});
-    slabLeast_ = std::min(slabLeast_, x.fx);
-    slabGreatest_ = std::max(slabGreatest_, x.fx);
+    slabEvents_.push_back({fx, fy, kOnLines, -1, lower, upper});
+    slabLeast_ = std::min(slabLeast_, fx);
+    slabGreatest_ = std::max(slabGreatest_, fx);
   }
   // Slab mode from a slab whose crossings found were at least 1/16 of the active pieces, normal
   // mode from one with fewer than 1/64.

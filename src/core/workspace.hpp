@@ -361,15 +361,21 @@ struct StartFrame {
 
 /// A point the sweep must visit that is not an input vertex: a crossing, an off-grid end, or
 /// where a merged coincident piece goes on. 32 bytes: the exact coordinates live in the event
-/// point pool (Workspace::eventPoints, 48 bytes a slot); the heap orders events by the cached
-/// doubles first and reads the pool only when they cannot decide.
+/// point pool (Workspace::eventPoints, 48 bytes a slot), or for a slab's crossing nowhere
+/// (kOnLines); the heap orders events by the cached doubles first and reads the exact points only
+/// when they cannot decide.
 struct SweepEvent {
-  double fx = 0, fy = 0;  ///< the point's cached doubles (XPoint::fx, fy)
-  int point = -1;         ///< its index in Workspace::eventPoints
-  int piece = -1;         ///< -1: visit the point only
-  int through = -1;       ///< a crossing: one of the two pieces crossing there (locates p)
-  int other = -1;         ///< a crossing: the other piece
+  /// The point's cached doubles: XPoint::fx, fy, or for a slab's crossing (kOnLines) the
+  /// looser ones of slabCrossing() (split_edges.cpp), which only compareCachedInBox() reads.
+  double fx = 0, fy = 0;
+  int point = -1;    ///< its index in Workspace::eventPoints, or kOnLines
+  int piece = -1;    ///< -1: visit the point only
+  int through = -1;  ///< a crossing: one of the two pieces crossing there (locates p)
+  int other = -1;    ///< a crossing: the other piece
 };
+/// SweepEvent::point of a slab's crossing: the crossing of pieces `through` and `other`'s lines,
+/// worked out exactly only where needed (split_edges.cpp: slabCrossing()).
+constexpr int kOnLines = -1;
 static_assert(sizeof(SweepEvent) == 32, "the event heap moves these around: keep them small");
 
 /// A vertex of a path being pre-clipped and the supporting segment of the edge leaving it

@@ -273,6 +273,29 @@ TEST(StageSplitEdges, SlabCrossingsCrowdedOnOneXAreSortedExactly) {
   }
 }
 
+// A slab's pieces whose order changes at the slab's right end where one of them ends: that is
+// the other passing through an input vertex, which the vertex's visit takes, not a crossing the
+// slab queues (nor counts for Limits::maxCrossings). The bow-tie column of the test above (slab
+// mode for the slab to x = 2000, 201 crossings) and a triangle whose long edge comes down from
+// above a rising piece to that piece's right end, (2000, 2016000), and goes on below it.
+TEST(StageSplitEdges, SlabPieceThroughAVertexOnTheSlabsEndIsNoCrossing) {
+  constexpr int kBowTies = 200;
+  Paths subject;
+  for (int j = 0; j <= kBowTies; ++j) {
+    const int y = 20000 * j;
+    subject.push_back(
+        {Point(0, y), Point(2000, y + 16000), Point(2000, y + 16000 - 16000), Point(0, y + 16000)});
+  }
+  const double end = 20000.0 * 100 + 16000;  // bow-tie 100's rising piece ends here, at x = 2000
+  subject.push_back({Point(0, end + 1000), Point(4000, end - 1000), Point(4000, end - 999)});
+  for (FillRule rule : {FillRule::EvenOdd, FillRule::NonZero}) {
+    SCOPED_TRACE(toString(rule));
+    EXPECT_GE(expectSlabsKeepThePlainPieces(subject, nullptr, stages::simplifyWith(rule)), 1u);
+    const detail::Arrangement a = stages::arrange(subject, nullptr, stages::simplifyWith(rule));
+    EXPECT_EQ(a.crossings, std::uint64_t(kBowTies + 1));
+  }
+}
+
 // Long steep edges at the edge of the coordinate range cross a vertical edge: the crossings
 // share their x exactly and have large denominators, so ordering them needs products beyond
 // 128 bits (the 256-bit branch of the exact comparison).
