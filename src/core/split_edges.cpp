@@ -142,7 +142,7 @@ class Sweep {
   Sweep& operator=(const Sweep&) = delete;
   ~Sweep() { status_.clear(); }  // the lease recycles the arrays, also when the sweep throws
 
-  Arrangement run() {
+  [[gnu::always_inline]] Arrangement run() {
     XPoint p;
     while (true) {
       if constexpr (kSlabs) {
@@ -543,8 +543,8 @@ class Sweep {
     const int lower = lo->piece, upper = hi->piece;
     SweepPiece& a = pieces_[std::size_t(lower)];
     SweepPiece& b = pieces_[std::size_t(upper)];
-    closeAt(a, p);
-    closeAt(b, p);
+    endResultAt(a, p);  // both go on, in each other's node
+    endResultAt(b, p);
     const int below = pieceIn(lo->below);
     Labels at = labelsAbove(below);
     // Above both, the winding numbers are the same before and after the swap.
@@ -664,9 +664,13 @@ class Sweep {
   }
 
   // Piece a leaves the status at p: its result piece, if any, ends there.
-  template <class At>
-  [[gnu::always_inline]] void closeAt(SweepPiece& a, const At& p) {
+  [[gnu::always_inline]] void closeAt(SweepPiece& a, const XPoint& p) {
     a.node = nullptr;
+    endResultAt(a, p);
+  }
+  // Piece a's result piece, if any, ends at p.
+  template <class At>
+  [[gnu::always_inline]] void endResultAt(const SweepPiece& a, const At& p) {
     if (a.slot >= 0) out_.pieces[a.slot].right = vertexHere(p);
   }
 
@@ -889,9 +893,10 @@ class Sweep {
     push(x, -1, a, b);
   }
   void countCrossing() {
-    if (++crossings_ > spec_.maxCrossings) {
-      throw ResourceLimitError("maxCrossings", spec_.maxCrossings, "crossings");
-    }
+    if (++crossings_ > spec_.maxCrossings) crossingsBeyondLimit();
+  }
+  [[noreturn, gnu::noinline, gnu::cold]] void crossingsBeyondLimit() const {
+    throw ResourceLimitError("maxCrossings", spec_.maxCrossings, "crossings");
   }
 
   // Slabs. Between two consecutive x of input vertices no piece starts or ends, so the pieces
@@ -996,6 +1001,9 @@ class Sweep {
     }
     if (entry != end) throw InternalError("splitEdges: a slab's pieces miscounted");
     const std::size_t n = slabOrder_.size();
+    // The slab's crossings count once it is sorted; until then each checks the room left below
+    // Limits::maxCrossings (crossings_ never exceeds it) before it takes memory.
+    slabRoom_ = spec_.maxCrossings - crossings_;
     for (std::size_t i = 1; i < n; ++i) {
       const SlabEntry e = slabOrder_[i];
       std::size_t j = i;
@@ -1006,6 +1014,7 @@ class Sweep {
       }
       slabOrder_[j] = e;
     }
+    crossings_ += slabEvents_.size();
     sortSlabEvents();
   }
   // The slab's crossings in sweep order. By their cached x first: a bucket sort into n buckets
@@ -1104,7 +1113,7 @@ class Sweep {
       const XPoint p = crossingOfLines(lower, upper);
       if (atGridPoint(p, a.lineB()) || atGridPoint(p, b.lineB())) return;
     }
-    countCrossing();
+    if (slabEvents_.size() >= slabRoom_) crossingsBeyondLimit();
     slabEvents_.push_back({fx, fy, kOnLines, -1, lower, upper});
     slabLeast_ = std::min(slabLeast_, fx);
     slabGreatest_ = std::max(slabGreatest_, fx);
@@ -1146,6 +1155,7 @@ class Sweep {
   bool slabMode_ = false;
   std::int64_t slabRight_ = std::numeric_limits<std::int64_t>::min();
   std::uint64_t crossingsAtSlab_ = 0;  // crossings_ when the slab began
+  std::uint64_t slabRoom_ = 0;         // crossings a slab pass may still find (slabPass())
   std::uint64_t slabPasses_ = 0;
   int active_ = 0;  // pieces in the status
   std::deque<StatusNode>& nodes_;

@@ -177,5 +177,25 @@ TEST(Limits, MaxCrossingsStopsTheSweepWithResourceLimitError) {
             area);
 }
 
+// The budget holds exactly in slab mode too, where one slab pass finds many crossings: two
+// columns of 201 bow-ties crossing once each, from x = 0 to 2000 and from x = 2000 to 4000. The
+// first column's crossings are found as neighbours (and put the sweep in slab mode), the
+// second's all by the pass over the slab from x = 2000 to 4000: 402 in all.
+TEST(Limits, MaxCrossingsHoldsExactlyForASlabsCrossings) {
+  Paths columns;
+  for (int j = 0; j <= 200; ++j) {
+    for (const double x : {0.0, 2000.0}) {
+      const double y = 20000.0 * j + (x > 0 ? 5000 : 0);
+      columns.push_back({{x, y}, {x + 2000, y + 16000}, {x + 2000, y}, {x, y + 16000}});
+    }
+  }
+  const auto limited = [](std::uint64_t crossings) {
+    return Options(Grid::fitted(), Limits{crossings});
+  };
+  EXPECT_THROW(simplify(columns, FillRule::NonZero, limited(401)), ResourceLimitError);
+  EXPECT_EQ(simplify(columns, FillRule::NonZero, limited(402)).area(),
+            simplify(columns, FillRule::NonZero).area());
+}
+
 }  // namespace
 }  // namespace roiclip
