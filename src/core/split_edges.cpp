@@ -594,6 +594,8 @@ class Sweep {
   // and another one known to pass through p (no orientation test needed for it), else -1.
   std::pair<int, int> takeEventsAt(const XPoint& p) {
     int locator = -1, known = -1;
+    const std::size_t cursorBefore = cursor_;
+    bool popped = false;
     while (cursor_ < starts_.size() && starts_[cursor_].key == pointKey_) {
       const SweepStart& ev = starts_[cursor_];
       // An end start lies at its piece's right end, which never changes: a piece still in the
@@ -621,7 +623,12 @@ class Sweep {
         }
       }
       pop();
+      popped = true;
     }
+    // p is the first start's or event's point: a visit that takes neither would come back to
+    // p for ever (an event whose cached doubles stray beyond their bound would do that).
+    if (cursor_ == cursorBefore && !popped)
+      throw InternalError("splitEdges: nothing to visit at p");
     return {locator, known};
   }
 
@@ -983,7 +990,7 @@ class Sweep {
   // Queues every crossing of two active pieces in the slab from x = slabRight_ (excluded) to x
   // (included). The status holds their order just after slabRight_; one that ends lower at x,
   // or meets another there and goes on lower, crossed it in the slab.
-  void slabPass(std::int64_t x) {
+  [[gnu::noinline]] void slabPass(std::int64_t x) {
     ++slabPasses_;
     slabLeast_ = std::numeric_limits<double>::infinity();
     slabGreatest_ = -slabLeast_;
@@ -1094,20 +1101,25 @@ class Sweep {
   // more than XPoint's 2^-21, and still inside compareCachedInBox()'s bound: two such values
   // are off by at most 2.25 * 2^-20 together, their rounded difference by 2^-22 more, and the
   // filter answers only beyond 2^-18 = 4 * 2^-20.
-  void slabCrossing(int lower, int upper, std::int64_t x) {
+  [[gnu::always_inline]] void slabCrossing(int lower, int upper, std::int64_t x) {
     const SweepPiece& a = pieces_[std::size_t(lower)];
     const SweepPiece& b = pieces_[std::size_t(upper)];
     const std::int64_t d1x = std::int64_t(a.bx) - a.ax, d1y = std::int64_t(a.by) - a.ay;
     const std::int64_t d2x = std::int64_t(b.bx) - b.ax, d2y = std::int64_t(b.by) - b.ay;
     const std::int64_t cx = std::int64_t(b.ax) - a.ax, cy = std::int64_t(b.ay) - a.ay;
-    i128 den = i128(d1x) * d2y - i128(d1y) * d2x;
-    if (den == 0) throw InternalError("splitEdges: parallel pieces swapped in a slab");
-    i128 num = i128(cx) * d2y - i128(cy) * d2x;
-    if (den < 0) {
-      den = -den;
-      num = -num;
+    // The lower piece ends above the upper one: it is the steeper (dx > 0 for both), so
+    // den = d2 x d1 > 0, and the crossing lies on the lower piece: num = (b.a - a.a) x d2 lies in
+    // [0, den]. Each product of two differences lies within 2^62, so both fit 64 bits but where
+    // den reaches 2^63 (the grid range's two diagonals).
+    std::int64_t den = 0, num = 0;
+    double t = 0;
+    if (!__builtin_sub_overflow(d1y * d2x, d1x * d2y, &den) &&
+        !__builtin_sub_overflow(cy * d2x, cx * d2y, &num)) {
+      if (den <= 0 || num < 0 || num > den) notACrossing();
+      t = double(num) / double(den);
+    } else {
+      t = slabParameterWide(a, b);
     }
-    const double t = toDouble(num) / toDouble(den);
     const double fx = double(a.ax) + double(d1x) * t, fy = double(a.ay) + double(d1y) * t;
     if (compareCachedInBox(fx, double(x)) >= 0) {  // perhaps on the line x: the exact test
       const XPoint p = crossingOfLines(lower, upper);
@@ -1117,6 +1129,19 @@ class Sweep {
     slabEvents_.push_back({fx, fy, kOnLines, -1, lower, upper});
     slabLeast_ = std::min(slabLeast_, fx);
     slabGreatest_ = std::max(slabGreatest_, fx);
+  }
+  // slabCrossing()'s t where num or den do not fit 64 bits signed.
+  [[gnu::noinline, gnu::cold]] static double slabParameterWide(const SweepPiece& a,
+                                                               const SweepPiece& b) {
+    const i128 d1x = std::int64_t(a.bx) - a.ax, d1y = std::int64_t(a.by) - a.ay;
+    const i128 d2x = std::int64_t(b.bx) - b.ax, d2y = std::int64_t(b.by) - b.ay;
+    const i128 cx = std::int64_t(b.ax) - a.ax, cy = std::int64_t(b.ay) - a.ay;
+    const i128 den = d1y * d2x - d1x * d2y, num = cy * d2x - cx * d2y;
+    if (den <= 0 || num < 0 || num > den) notACrossing();
+    return toDouble(num) / toDouble(den);
+  }
+  [[noreturn, gnu::noinline, gnu::cold]] static void notACrossing() {
+    throw InternalError("splitEdges: a slab swapped pieces that do not cross");
   }
   // Slab mode from a slab whose crossings found were at least 1/16 of the active pieces, normal
   // mode from one with fewer than 1/64.

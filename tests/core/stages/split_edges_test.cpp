@@ -317,6 +317,28 @@ TEST(Simplify, CrossingsSharingXAtRangeEdge) {
   }
 }
 
+// A slab crossing of the grid range's two diagonals: in [-1, 1]^2 on the grid of 2^30 units per
+// unit the corners lie at +-2^30 units (Grid::kMaxUnits), so the diagonals' cross product is
+// 2^63, the most the slab pass's 64-bit unsigned parameter holds (slabCrossing()). A column of
+// thin bow-ties across the box puts the sweep in slab mode for the slab from x = -1 to 1.
+TEST(Simplify, SlabCrossingOfTheGridRangesDiagonals) {
+  Paths in = {{{-1, -1}, {1, 1}, {1, -1}, {-1, 1}}};
+  for (int j = 0; j < 40; ++j) {
+    const double y = -1 + (j + 0.5) / 20, d = 1.0 / 64;
+    in.push_back({{-1, y}, {1, y + d}, {1, y}, {-1, y + d}});
+  }
+  for (FillRule rule : {FillRule::EvenOdd, FillRule::NonZero}) {
+    SCOPED_TRACE(toString(rule));
+    const PolygonSet r = simplify(in, rule, Grid::fixed(0x1p30));
+    const auto filled = [&](const std::vector<long long>& w) { return isFilled(rule, w[0]); };
+    const double truth = testing::slabArea({&in}, filled);
+    EXPECT_NEAR(r.area(), truth, 1e-9 * truth);
+    const auto report = testing::sampleRegion(r, {&in}, filled, -1, 1, 400, 5u);
+    EXPECT_EQ(report.mismatches, 0) << report.firstMismatch;
+    EXPECT_GT(report.checked, 300);
+  }
+}
+
 // An arrangement keeps a crossing as the indices of two lines (ArrangementVertex) and computes
 // it again when read: crossingOfLines() must give the point lineIntersection() gives, also where
 // W or the parameter along the first line need more than 64 bits (lines across the whole grid
