@@ -198,6 +198,27 @@ double OutputFrame::coordinate(i128 units, i128 w, int axis) const {
   return coordinateExact(units, w, o);
 }
 
+bool OutputFrame::offGridFast(i128 x, i128 y, i128 w, Point& out) const {
+  constexpr i128 kUnitsBound = i128(1) << 100;
+  if (w <= 1 || (w >> 64) != 0 || x <= -kUnitsBound || x >= kUnitsBound || y <= -kUnitsBound ||
+      y >= kUnitsBound) {
+    return false;
+  }
+  const auto d = std::uint64_t(w);
+  const auto axis = [&](i128 units, std::int64_t origin, double& v) {
+    // |units| < 2^100 and |origin| < 2^52 (gridFast_), so |n| < 2^100 + 2^116.
+    const i128 n = units + i128(origin) * i128(d);
+    if (n == 0) {
+      v = 0.0;
+      return true;
+    }
+    if (!nearestNarrow(n < 0 ? u128(-n) : u128(n), d, -scaleExponent_, v)) return false;
+    if (n < 0) v = -v;
+    return true;
+  };
+  return axis(x, gridOrigin_[0], out.x) && axis(y, gridOrigin_[1], out.y);
+}
+
 double OutputFrame::coordinateExact(i128 units, i128 w, i128 o) const {
   i128 ow = 0, n = 0, d = 0;
   if (!__builtin_mul_overflow(o, w, &ow) && !__builtin_add_overflow(units, ow, &n) &&

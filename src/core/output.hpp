@@ -27,8 +27,11 @@ class OutputFrame {
   [[nodiscard]] Point point(const ExactCoords& p) const { return point(p.x, p.y, p.w); }
   /// Both coordinates of (x/w, y/w).
   [[nodiscard]] Point point(i128 x, i128 y, i128 w) const {
-    if (gridFast_ && w == 1) {  // a grid point (within the grid's range, as every vertex)
-      return point(IPoint{std::int64_t(x), std::int64_t(y)});
+    if (gridFast_) {
+      // A grid point (within the grid's range, as every vertex), else mostly a crossing.
+      if (w == 1) return point(IPoint{std::int64_t(x), std::int64_t(y)});
+      Point out;
+      if (offGridFast(x, y, w, out)) return out;
     }
     return {coordinate(x, w, 0), coordinate(y, w, 1)};
   }
@@ -44,6 +47,11 @@ class OutputFrame {
   }
 
  private:
+  /// point() on a power-of-two grid (gridFast_) for W in (1, 2^64) and |X|, |Y| < 2^100, as
+  /// every crossing of two grid segments (W <= 2^63, |X| < 2^95): each coordinate's numerator
+  /// X + origin W lies below 2^117, one division each (nearestNarrow()). False where a result
+  /// is not a normal double.
+  bool offGridFast(i128 x, i128 y, i128 w, Point& out) const;
   /// coordinate() beyond its 64-bit fast paths: exact division in 128 or 256 bits.
   [[nodiscard]] double coordinateExact(i128 units, i128 w, i128 originUnits) const;
 
