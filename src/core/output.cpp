@@ -94,19 +94,25 @@ std::uint64_t divide(u128 n, std::uint64_t d, std::uint64_t& remainder) {
 // nearestUnsigned() for n < 2^119 and d < 2^64 (the common case: a crossing's coordinate and
 // its W) in 64-bit words: the shifted dividend fits 128 bits, the shifted divisor 64 and the
 // quotient 56, so one 128-by-64-bit division gives q and the remainder. False (the caller then
-// takes nearestUnsigned()) for n >= 2^119 or a result that is not normal.
-bool nearestNarrow(u128 n, std::uint64_t d, int exp2, double& out) {
-  const int nb = bitLength(n), db = 64 - __builtin_clzll(d);
+// takes nearestUnsigned()) for n >= 2^119 or a result that is not normal. n > 0.
+[[gnu::always_inline]] inline bool nearestNarrow(u128 n, std::uint64_t d, int exp2, double& out) {
+  const auto high = std::uint64_t(n >> 64);
+  const int nb = high != 0 ? 128 - __builtin_clzll(high) : 64 - __builtin_clzll(std::uint64_t(n));
   if (nb > 119) return false;
-  const int sh = 55 - (nb - db);  // n 2^sh / d lies in (2^54, 2^56)
+  const int sh = 55 - (nb - (64 - __builtin_clzll(d)));  // n 2^sh / d lies in (2^54, 2^56)
   std::uint64_t rem = 0;
   const std::uint64_t q = sh >= 0 ? divide(n << sh, d, rem) : divide(n, d << -sh, rem);
   const int drop = (64 - __builtin_clzll(q)) - 53;  // 2 or 3
-  std::uint64_t m = q >> drop;
+  std::uint64_t m = q >> drop;                      // in [2^52, 2^53)
   const std::uint64_t rest = q & ((std::uint64_t{1} << drop) - 1);
   const std::uint64_t half = std::uint64_t{1} << (drop - 1);
   if (rest > half || (rest == half && (rem != 0 || (m & 1) != 0))) ++m;  // ties to even
-  return timesPow2(double(m), exp2 - sh + drop, out);
+  // m 2^e as bits: the exponent field of 2^52 2^e, plus m - 2^52 (m = 2^53 after rounding up
+  // carries into the exponent, as it should). Normal results only.
+  const int field = exp2 - sh + drop + 1075;
+  if (field < 1 || field + int(m >> 53) > 2046) return false;
+  out = fromBits((std::uint64_t(field) << 52) + (m - (std::uint64_t{1} << 52)));
+  return true;
 }
 
 bool fitsInt64(i128 v) { return v == i128(std::int64_t(v)); }
@@ -199,11 +205,9 @@ double OutputFrame::coordinate(i128 units, i128 w, int axis) const {
 }
 
 bool OutputFrame::offGridFast(i128 x, i128 y, i128 w, Point& out) const {
-  constexpr i128 kUnitsBound = i128(1) << 100;
-  if (w <= 1 || (w >> 64) != 0 || x <= -kUnitsBound || x >= kUnitsBound || y <= -kUnitsBound ||
-      y >= kUnitsBound) {
-    return false;
-  }
+  // |v| < 2^100 or -2^100: v >> 100 is 0 or -1.
+  const auto within = [](i128 v) { return u128((v >> 100) + 1) <= 1; };
+  if (w <= 1 || (w >> 64) != 0 || !within(x) || !within(y)) return false;
   const auto d = std::uint64_t(w);
   const auto axis = [&](i128 units, std::int64_t origin, double& v) {
     // |units| < 2^100 and |origin| < 2^52 (gridFast_), so |n| < 2^100 + 2^116.
