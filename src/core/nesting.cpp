@@ -67,10 +67,26 @@ PolygonSet buildNesting(const Arrangement& arrangement, const Contours& contours
   constexpr double kUnset = std::numeric_limits<double>::quiet_NaN();
   std::vector<Point>& converted = scratch.converted;
   converted.assign(cache ? arrangement.vertices.size() : 0, Point{kUnset, kUnset});
+  // A crossing from its lines' parameter, without its exact coordinates first.
+  const auto convert = [&](int v) {
+    const ArrangementVertex& vertex = arrangement.vertices[std::size_t(v)];
+    if (vertex.onGrid()) return frame.point(IPoint{vertex.a, vertex.b});
+    if (vertex.isCrossing()) {
+      const GridSegment& l1 = arrangement.lines[vertex.line1()];
+      const GridSegment& l2 = arrangement.lines[vertex.line2()];
+      std::int64_t num = 0, den = 0;
+      Point p;
+      if (crossingParameter(l1, l2, num, den) &&
+          frame.alongFast(l1.lineA(), l1.direction(), num, den, p)) {
+        return p;
+      }
+    }
+    return frame.point(arrangement.exact(v));
+  };
   auto pointOf = [&](int v) {
-    if (!cache) return frame.point(arrangement.exact(v));
+    if (!cache) return convert(v);
     Point& q = converted[std::size_t(v)];
-    if (std::isnan(q.x)) q = frame.point(arrangement.exact(v));
+    if (std::isnan(q.x)) q = convert(v);
     return q;
   };
   // Traced rings have the filled side on their left (outer rings counter-clockwise in the raw

@@ -204,23 +204,35 @@ double OutputFrame::coordinate(i128 units, i128 w, int axis) const {
   return coordinateExact(units, w, o);
 }
 
+[[gnu::always_inline]] inline bool OutputFrame::quotientFast(i128 n, std::uint64_t d,
+                                                             double& v) const {
+  if (n == 0) {
+    v = 0.0;
+    return true;
+  }
+  if (!nearestNarrow(n < 0 ? u128(-n) : u128(n), d, -scaleExponent_, v)) return false;
+  if (n < 0) v = -v;
+  return true;
+}
+
 bool OutputFrame::offGridFast(i128 x, i128 y, i128 w, Point& out) const {
   // |v| < 2^100 or -2^100: v >> 100 is 0 or -1.
   const auto within = [](i128 v) { return u128((v >> 100) + 1) <= 1; };
   if (w <= 1 || (w >> 64) != 0 || !within(x) || !within(y)) return false;
+  // |X| <= 2^100 and |origin| < 2^52 (gridFast_): each numerator lies within 2^117.
   const auto d = std::uint64_t(w);
-  const auto axis = [&](i128 units, std::int64_t origin, double& v) {
-    // |units| < 2^100 and |origin| < 2^52 (gridFast_), so |n| < 2^100 + 2^116.
-    const i128 n = units + i128(origin) * i128(d);
-    if (n == 0) {
-      v = 0.0;
-      return true;
-    }
-    if (!nearestNarrow(n < 0 ? u128(-n) : u128(n), d, -scaleExponent_, v)) return false;
-    if (n < 0) v = -v;
-    return true;
-  };
-  return axis(x, gridOrigin_[0], out.x) && axis(y, gridOrigin_[1], out.y);
+  return quotientFast(x + i128(gridOrigin_[0]) * i128(d), d, out.x) &&
+         quotientFast(y + i128(gridOrigin_[1]) * i128(d), d, out.y);
+}
+
+bool OutputFrame::alongFast(IPoint a, IPoint d, std::int64_t num, std::int64_t den,
+                            Point& out) const {
+  if (!gridFast_ || den <= 0) return false;
+  // |a + origin| < 2^53 and den < 2^63, |d num| <= 2^94: each numerator lies within 2^117.
+  return quotientFast(i128(a.x + gridOrigin_[0]) * den + i128(d.x) * num, std::uint64_t(den),
+                      out.x) &&
+         quotientFast(i128(a.y + gridOrigin_[1]) * den + i128(d.y) * num, std::uint64_t(den),
+                      out.y);
 }
 
 double OutputFrame::coordinateExact(i128 units, i128 w, i128 o) const {

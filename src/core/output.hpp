@@ -35,6 +35,11 @@ class OutputFrame {
     }
     return {coordinate(x, w, 0), coordinate(y, w, 1)};
   }
+  /// The point a + (num / den) d for a grid point a, |d.x|, |d.y| <= 2^31 and 0 < den < 2^63
+  /// (a crossing by its parameter along a grid line: crossingParameter()), on a power-of-two
+  /// grid (gridFast_): each coordinate's numerator (a + origin) den + d num in two 64-by-64-bit
+  /// products, then one division. False elsewhere, or where a result is not a normal double.
+  bool alongFast(IPoint a, IPoint d, std::int64_t num, std::int64_t den, Point& out) const;
   /// Whether grid points convert exactly (point(IPoint)): distinct ones give distinct doubles.
   [[nodiscard]] bool gridPointsExact() const { return gridFast_; }
   /// Both coordinates of a grid point.
@@ -52,6 +57,9 @@ class OutputFrame {
   /// X + origin W lies below 2^117, one division each (nearestNarrow()). False where a result
   /// is not a normal double.
   bool offGridFast(i128 x, i128 y, i128 w, Point& out) const;
+  /// n / d * 2^-scaleExponent_ to the nearest double for |n| < 2^117, d in [1, 2^64): the fast
+  /// grid's one division (nearestNarrow()); false where the result is not a normal double.
+  bool quotientFast(i128 n, std::uint64_t d, double& v) const;
   /// coordinate() beyond its 64-bit fast paths: exact division in 128 or 256 bits.
   [[nodiscard]] double coordinateExact(i128 units, i128 w, i128 originUnits) const;
 

@@ -266,6 +266,25 @@ struct GridSegment {
   }
 };
 
+/// The crossing of the lines of l1 and l2 as its parameter num / den along l1 (den > 0), where
+/// both fit 64 bits (all but lines near the grid range's corners); false elsewhere.
+inline bool crossingParameter(const GridSegment& l1, const GridSegment& l2, std::int64_t& num,
+                              std::int64_t& den) {
+  const std::int64_t d1x = std::int64_t(l1.bx) - l1.ax, d1y = std::int64_t(l1.by) - l1.ay;
+  const std::int64_t d2x = std::int64_t(l2.bx) - l2.ax, d2y = std::int64_t(l2.by) - l2.ay;
+  const std::int64_t cx = std::int64_t(l2.ax) - l1.ax, cy = std::int64_t(l2.ay) - l1.ay;
+  // Each product of two differences lies within 2^62; their difference may not fit, and
+  // neither may its negation (-2^63).
+  if (__builtin_sub_overflow(d1x * d2y, d1y * d2x, &den) ||
+      __builtin_sub_overflow(cx * d2y, cy * d2x, &num) || den == INT64_MIN || num == INT64_MIN) {
+    return false;
+  }
+  if (den < 0) {
+    den = -den;
+    num = -num;
+  }
+  return den != 0;
+}
 /// The crossing of the lines of l1 and l2, which must not be parallel, as (X/W, Y/W) with
 /// W = |d1 x d2| for their directions d1 and d2, not reduced (lineIntersection() without the grid
 /// test and the cached doubles). Grid coordinates lie within 2^30 of the origin, so each
@@ -273,6 +292,10 @@ struct GridSegment {
 /// mostly fit 64 bits too, and then each coordinate takes two 64-by-64-bit products.
 inline ExactCoords crossingOfLines(const GridSegment& l1, const GridSegment& l2) {
   const std::int64_t d1x = std::int64_t(l1.bx) - l1.ax, d1y = std::int64_t(l1.by) - l1.ay;
+  std::int64_t w = 0, t = 0;
+  if (crossingParameter(l1, l2, t, w)) {
+    return {i128(l1.ax) * w + i128(d1x) * t, i128(l1.ay) * w + i128(d1y) * t, w};
+  }
   const std::int64_t d2x = std::int64_t(l2.bx) - l2.ax, d2y = std::int64_t(l2.by) - l2.ay;
   const std::int64_t cx = std::int64_t(l2.ax) - l1.ax, cy = std::int64_t(l2.ay) - l1.ay;
   i128 den = i128(d1x * d2y) - i128(d1y * d2x);
@@ -280,11 +303,6 @@ inline ExactCoords crossingOfLines(const GridSegment& l1, const GridSegment& l2)
   if (den < 0) {
     den = -den;
     num = -num;
-  }
-  const auto fits64 = [](i128 v) { return v == i128(std::int64_t(v)); };
-  if (fits64(den) && fits64(num)) {
-    const std::int64_t w = std::int64_t(den), t = std::int64_t(num);
-    return {i128(l1.ax) * w + i128(d1x) * t, i128(l1.ay) * w + i128(d1y) * t, den};
   }
   return {i128(l1.ax) * den + i128(d1x) * num, i128(l1.ay) * den + i128(d1y) * num, den};
 }

@@ -87,6 +87,44 @@ TEST(StageOutput, CrossingsOfRandomSegmentsAreCorrectlyRounded) {
   EXPECT_GT(checked, 14000);
 }
 
+// The arrangement's crossings convert from their lines' parameter (crossingParameter(),
+// OutputFrame::alongFast()) without their exact coordinates: the same correctly rounded doubles
+// as the exact point gives, on every power-of-two grid (the others take the exact point).
+TEST(StageOutput, CrossingsByParameterAreCorrectlyRounded) {
+  std::mt19937_64 rng(23);
+  int checked = 0;
+  for (const Grid& grid : kGrids) {
+    const detail::OutputFrame frame(grid);
+    for (int i = 0; i < 3000; ++i) {
+      // The whole +-2^30 range (the range's corners among them), and short segments.
+      const std::int64_t range = i % 3 == 0 ? 1000 : Grid::kMaxUnits;
+      detail::GridSegment l1, l2;
+      l1.setLine(randomUnits(rng, range), randomUnits(rng, range));
+      l2.setLine(randomUnits(rng, range), randomUnits(rng, range));
+      if (i % 100 == 1) {  // the diagonals of the range: W = 2^63, beyond the 64-bit route
+        const std::int64_t k = Grid::kMaxUnits;
+        l1.setLine({-k, -k}, {k, k});
+        l2.setLine({-k, k}, {k, -k});
+      }
+      std::int64_t num = 0, den = 0;
+      const bool narrow = detail::crossingParameter(l1, l2, num, den);
+      if (i % 100 == 1) EXPECT_FALSE(narrow);
+      if (!narrow) continue;
+      Point p;
+      if (!frame.alongFast(l1.lineA(), l1.direction(), num, den, p)) {
+        EXPECT_FALSE(frame.gridPointsExact()) << "a power-of-two grid takes the fast route";
+        continue;
+      }
+      const detail::ExactCoords x = detail::crossingOfLines(l1, l2);
+      const XPoint exact(x.x, x.y, x.w);
+      EXPECT_EQ(p.x, nearest(exactCoordinate(exact.x, exact.w, grid, grid.origin.x)));
+      EXPECT_EQ(p.y, nearest(exactCoordinate(exact.y, exact.w, grid, grid.origin.y)));
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 11000);
+}
+
 // The same exact crossing from different segment pairs (other ends on the same lines, so other
 // unreduced X/W) gives the same doubles.
 TEST(StageOutput, EqualCrossingsFromDifferentSegmentsGiveEqualDoubles) {
