@@ -89,7 +89,7 @@ class ChunkedArray {
   void reserve(std::size_t n) {
     if (chunks_.size() <= 1 && std::min(n, kChunk) > first_) growFirst(std::min(n, kChunk));
   }
-  void push_back(const T& v) {
+  [[gnu::always_inline]] void push_back(const T& v) {
     if (size_ == room_) addRoom();
     std::memcpy(static_cast<void*>(end_), &v, sizeof(T));
     ++end_;

@@ -147,6 +147,15 @@ Contours trace(const Arrangement& arrangement, const Pieces& pieces, TraceScratc
   std::vector<int>& ins = scratch.ins;
   std::vector<Ray> rays;
   for (const int v : shared) {
+    // Two leaving and two arriving (every crossing of an even-odd result): straight from the
+    // lists, without copying them.
+    const int o1 = outHead[std::size_t(v)], o2 = outNext[std::size_t(o1)];
+    const int i1 = inHead[std::size_t(v)], i2 = i1 >= 0 ? pairOut[std::size_t(i1)] : -1;
+    if (o2 >= 0 && outNext[std::size_t(o2)] < 0 && i2 >= 0 && pairOut[std::size_t(i2)] < 0) {
+      const int two[2] = {o1, o2}, twoIn[2] = {i1, i2};
+      pairAtSharedVertex(pieces, v, two, twoIn, 2, rays, pairOut);
+      continue;
+    }
     outs.clear();
     ins.clear();
     for (int e = outHead[std::size_t(v)]; e >= 0; e = outNext[std::size_t(e)]) outs.push_back(e);

@@ -108,7 +108,9 @@ TEST(StageOutput, CrossingsByParameterAreCorrectlyRounded) {
       }
       std::int64_t num = 0, den = 0;
       const bool narrow = detail::crossingParameter(l1, l2, num, den);
-      if (i % 100 == 1) EXPECT_FALSE(narrow);
+      if (i % 100 == 1) {
+        EXPECT_FALSE(narrow);
+      }
       if (!narrow) continue;
       Point p;
       if (!frame.alongFast(l1.lineA(), l1.direction(), num, den, p)) {
