@@ -401,12 +401,21 @@ class Sweep {
   // so a grid point's lie within 2^-19 of integers.
   int vertexHere(const SlabCrossingAt& c) {
     if (vertex_ < 0) {
-      const auto nearInteger = [](double v) { return std::fabs(v - roundToUnits(v)) <= 0x1p-19; };
+      // |v| <= 2^31 (grid range): adding and subtracting 1.5 * 2^52 rounds v to an integer.
+      constexpr double kRound = 0x1.8p52;
+      const auto nearInteger = [](double v) {
+        return std::fabs(v - ((v + kRound) - kRound)) <= 0x1p-19;
+      };
       if (nearInteger(c.fx) && nearInteger(c.fy)) {
         return vertexHere(crossingOfLines(crossingHere_[0], crossingHere_[1]));
       }
       vertex_ = int(out_.vertices.size());
-      out_.vertices.push_back(offGridVertex(nullptr));
+      // The crossing of two pieces' lines (lineOf(): the first's index checked as offGridVertex()
+      // does), else that function's way.
+      const std::int64_t line1 = lineOf(crossingHere_[0]), line2 = lineOf(crossingHere_[1]);
+      out_.vertices.push_back(line1 <= ArrangementVertex::kMaxIndex
+                                  ? ArrangementVertex::crossing(line1, line2)
+                                  : offGridVertex(nullptr));
     }
     return vertex_;
   }

@@ -30,25 +30,34 @@ struct Ray {
 // Pairs the `count` pieces arriving at vertex v with the `count` (> 1) leaving it: each
 // incoming piece with the outgoing piece next to it clockwise. Apart from traceContours' loop
 // (rare on most inputs, and it keeps that loop small).
+// Piece e's direction away from vertex v.
+template <class Pieces>
+[[gnu::always_inline]] inline IPoint awayFrom(const Pieces& pieces, int v, int e) {
+  const IPoint d = pieces[std::size_t(e)].direction();
+  return pieces[std::size_t(e)].left == v ? d : IPoint{-d.x, -d.y};
+}
+
+// Two rings touching (every crossing of an even-odd result): no sort. The incoming piece that
+// lies counter-clockwise between the two outgoing ones pairs with the first of them.
+template <class Pieces>
+[[gnu::always_inline]] inline void pairTwo(const Pieces& pieces, int v, int o1, int o2, int i1,
+                                           int i2, std::vector<int>& pairOut) {
+  const IPoint d1 = awayFrom(pieces, v, o1), d2 = awayFrom(pieces, v, o2);
+  const bool first = inSectorCcw(d1, d2, awayFrom(pieces, v, i1));
+  if (first == inSectorCcw(d1, d2, awayFrom(pieces, v, i2))) {
+    throw InternalError("traceContours: pieces around a vertex do not alternate");
+  }
+  pairOut[std::size_t(i1)] = first ? o1 : o2;
+  pairOut[std::size_t(i2)] = first ? o2 : o1;
+}
+
 template <class Pieces>
 [[gnu::noinline]] void pairAtSharedVertex(const Pieces& pieces, int v, const int* outgoing,
                                           const int* incoming, int count, std::vector<Ray>& rays,
                                           std::vector<int>& pairOut) {
-  const auto along = [&](int e) {
-    const IPoint d = pieces[std::size_t(e)].direction();
-    return pieces[std::size_t(e)].left == v ? d : IPoint{-d.x, -d.y};
-  };
+  const auto along = [&](int e) { return awayFrom(pieces, v, e); };
   if (count == 2) {
-    // Two rings touching (every crossing of an even-odd result): no sort. The incoming piece
-    // that lies counter-clockwise between the two outgoing ones pairs with the first of them.
-    const int o1 = outgoing[0], o2 = outgoing[1], i1 = incoming[0], i2 = incoming[1];
-    const IPoint d1 = along(o1), d2 = along(o2);
-    const bool first = inSectorCcw(d1, d2, along(i1));
-    if (first == inSectorCcw(d1, d2, along(i2))) {
-      throw InternalError("traceContours: pieces around a vertex do not alternate");
-    }
-    pairOut[std::size_t(i1)] = first ? o1 : o2;
-    pairOut[std::size_t(i2)] = first ? o2 : o1;
+    pairTwo(pieces, v, outgoing[0], outgoing[1], incoming[0], incoming[1], pairOut);
     return;
   }
   rays.clear();
@@ -152,8 +161,7 @@ Contours trace(const Arrangement& arrangement, const Pieces& pieces, TraceScratc
     const int o1 = outHead[std::size_t(v)], o2 = outNext[std::size_t(o1)];
     const int i1 = inHead[std::size_t(v)], i2 = i1 >= 0 ? pairOut[std::size_t(i1)] : -1;
     if (o2 >= 0 && outNext[std::size_t(o2)] < 0 && i2 >= 0 && pairOut[std::size_t(i2)] < 0) {
-      const int two[2] = {o1, o2}, twoIn[2] = {i1, i2};
-      pairAtSharedVertex(pieces, v, two, twoIn, 2, rays, pairOut);
+      pairTwo(pieces, v, o1, o2, i1, i2, pairOut);
       continue;
     }
     outs.clear();
