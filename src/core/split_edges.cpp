@@ -229,7 +229,7 @@ class Sweep {
   // crossing (kOnLines: slabCrossing()) worked out from its two pieces' lines, with the tighter
   // cached doubles of any XPoint.
   [[nodiscard, gnu::always_inline]] XPoint eventPoint(const SweepEvent& e) const {
-    if (kSlabs && e.point == kOnLines) return crossingOfLines(e.through, e.other);
+    if (kSlabs && e.point == kOnLines) return exactCrossing(e.through, e.other);
     const ExactCoords& c = eventPoints_[std::size_t(e.point)];
     XPoint p;
     p.x = c.x;
@@ -240,7 +240,7 @@ class Sweep {
     return p;
   }
   // The crossing of pieces i and j's lines, exactly (their lines cross: a slab found it).
-  [[nodiscard, gnu::noinline]] XPoint crossingOfLines(int i, int j) const {
+  [[nodiscard, gnu::noinline]] XPoint exactCrossing(int i, int j) const {
     const SweepPiece& a = pieces_[std::size_t(i)];
     const SweepPiece& b = pieces_[std::size_t(j)];
     XPoint x;
@@ -407,11 +407,11 @@ class Sweep {
         return std::fabs(v - ((v + kRound) - kRound)) <= 0x1p-19;
       };
       if (nearInteger(c.fx) && nearInteger(c.fy)) {
-        return vertexHere(crossingOfLines(crossingHere_[0], crossingHere_[1]));
+        return vertexHere(exactCrossing(crossingHere_[0], crossingHere_[1]));
       }
       vertex_ = int(out_.vertices.size());
-      // The crossing of two pieces' lines (lineOf(): the first's index checked as offGridVertex()
-      // does), else that function's way.
+      // As offGridVertex() keeps a crossing (without its call), the exact point only where the
+      // first line's index is beyond what ArrangementVertex holds.
       const std::int64_t line1 = lineOf(crossingHere_[0]), line2 = lineOf(crossingHere_[1]);
       out_.vertices.push_back(line1 <= ArrangementVertex::kMaxIndex
                                   ? ArrangementVertex::crossing(line1, line2)
@@ -427,7 +427,7 @@ class Sweep {
       const std::int64_t line1 = lineOf(crossingHere_[0]), line2 = lineOf(crossingHere_[1]);
       if (line1 <= ArrangementVertex::kMaxIndex) return ArrangementVertex::crossing(line1, line2);
     }
-    const XPoint p = at != nullptr ? *at : crossingOfLines(crossingHere_[0], crossingHere_[1]);
+    const XPoint p = at != nullptr ? *at : exactCrossing(crossingHere_[0], crossingHere_[1]);
     if (!PackedPoint::representable(p) ||
         out_.offGrid.size() > std::size_t(ArrangementVertex::kMaxIndex)) {
       vertexBeyondRange();
@@ -636,8 +636,9 @@ class Sweep {
     }
     // p is the first start's or event's point: a visit that takes neither would come back to
     // p for ever (an event whose cached doubles stray beyond their bound would do that).
-    if (cursor_ == cursorBefore && !popped)
+    if (cursor_ == cursorBefore && !popped) {
       throw InternalError("splitEdges: nothing to visit at p");
+    }
     return {locator, known};
   }
 
@@ -1131,7 +1132,7 @@ class Sweep {
     }
     const double fx = double(a.ax) + double(d1x) * t, fy = double(a.ay) + double(d1y) * t;
     if (compareCachedInBox(fx, double(x)) >= 0) {  // perhaps on the line x: the exact test
-      const XPoint p = crossingOfLines(lower, upper);
+      const XPoint p = exactCrossing(lower, upper);
       if (atGridPoint(p, a.lineB()) || atGridPoint(p, b.lineB())) return;
     }
     if (slabEvents_.size() >= slabRoom_) crossingsBeyondLimit();

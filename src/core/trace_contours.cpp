@@ -27,9 +27,6 @@ struct Ray {
   bool outgoing = false;
 };
 
-// Pairs the `count` pieces arriving at vertex v with the `count` (> 1) leaving it: each
-// incoming piece with the outgoing piece next to it clockwise. Apart from traceContours' loop
-// (rare on most inputs, and it keeps that loop small).
 // Piece e's direction away from vertex v.
 template <class Pieces>
 [[gnu::always_inline]] inline IPoint awayFrom(const Pieces& pieces, int v, int e) {
@@ -51,15 +48,14 @@ template <class Pieces>
   pairOut[std::size_t(i2)] = first ? o2 : o1;
 }
 
+// Pairs the `count` pieces arriving at vertex v with the `count` (> 2: two each take pairTwo())
+// leaving it: each incoming piece with the outgoing piece next to it clockwise. Apart from
+// traceContours' loop (rare on most inputs, and it keeps that loop small).
 template <class Pieces>
 [[gnu::noinline]] void pairAtSharedVertex(const Pieces& pieces, int v, const int* outgoing,
                                           const int* incoming, int count, std::vector<Ray>& rays,
                                           std::vector<int>& pairOut) {
   const auto along = [&](int e) { return awayFrom(pieces, v, e); };
-  if (count == 2) {
-    pairTwo(pieces, v, outgoing[0], outgoing[1], incoming[0], incoming[1], pairOut);
-    return;
-  }
   rays.clear();
   for (int i = 0; i < count; ++i) rays.push_back({along(outgoing[i]), outgoing[i], true});
   for (int i = 0; i < count; ++i) rays.push_back({along(incoming[i]), incoming[i], false});

@@ -366,7 +366,8 @@ struct StartFrame {
 /// when they cannot decide.
 struct SweepEvent {
   /// The point's cached doubles: XPoint::fx, fy, or for a slab's crossing (kOnLines) the
-  /// looser ones of slabCrossing() (split_edges.cpp), which only compareCachedInBox() reads.
+  /// looser ones of slabCrossing() (split_edges.cpp), which only compareCachedInBox()'s test
+  /// reads (and the bucket sort, whose order the exact insertion pass settles).
   double fx = 0, fy = 0;
   int point = -1;    ///< its index in Workspace::eventPoints, or kOnLines
   int piece = -1;    ///< -1: visit the point only
