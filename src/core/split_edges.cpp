@@ -399,25 +399,28 @@ class Sweep {
   // The same for a slab's crossing in a direct visit, worked out exactly only where it may be a
   // grid point (rare): its cached doubles lie within 2^-19 of its coordinates (slabCrossing()),
   // so a grid point's lie within 2^-19 of integers.
-  int vertexHere(const SlabCrossingAt& c) {
-    if (vertex_ < 0) {
-      // |v| <= 2^31 (grid range): adding and subtracting 1.5 * 2^52 rounds v to an integer.
-      constexpr double kRound = 0x1.8p52;
-      const auto nearInteger = [](double v) {
-        return std::fabs(v - ((v + kRound) - kRound)) <= 0x1p-19;
-      };
-      if (nearInteger(c.fx) && nearInteger(c.fy)) {
-        return vertexHere(exactCrossing(crossingHere_[0], crossingHere_[1]));
-      }
-      vertex_ = int(out_.vertices.size());
-      // As offGridVertex() keeps a crossing (without its call), the exact point only where the
-      // first line's index is beyond what ArrangementVertex holds.
-      const std::int64_t line1 = lineOf(crossingHere_[0]), line2 = lineOf(crossingHere_[1]);
-      out_.vertices.push_back(line1 <= ArrangementVertex::kMaxIndex
-                                  ? ArrangementVertex::crossing(line1, line2)
-                                  : offGridVertex(nullptr));
-    }
+  [[gnu::always_inline]] int vertexHere(const SlabCrossingAt& c) {
+    if (vertex_ < 0) newCrossingVertex(c);
     return vertex_;
+  }
+  // The first call at the point: the vertex is stored.
+  [[gnu::noinline]] void newCrossingVertex(const SlabCrossingAt& c) {
+    // |v| <= 2^31 (grid range): adding and subtracting 1.5 * 2^52 rounds v to an integer.
+    constexpr double kRound = 0x1.8p52;
+    const auto nearInteger = [](double v) {
+      return std::fabs(v - ((v + kRound) - kRound)) <= 0x1p-19;
+    };
+    if (nearInteger(c.fx) && nearInteger(c.fy)) {
+      vertexHere(exactCrossing(crossingHere_[0], crossingHere_[1]));
+      return;
+    }
+    vertex_ = int(out_.vertices.size());
+    // As offGridVertex() keeps a crossing (without its call), the exact point only where the
+    // first line's index is beyond what ArrangementVertex holds.
+    const std::int64_t line1 = lineOf(crossingHere_[0]), line2 = lineOf(crossingHere_[1]);
+    out_.vertices.push_back(line1 <= ArrangementVertex::kMaxIndex
+                                ? ArrangementVertex::crossing(line1, line2)
+                                : offGridVertex(nullptr));
   }
   // p off the grid as the arrangement keeps it: where two crossing pieces met at p, the crossing
   // of their lines; else (an exact edge's end) the exact point.
@@ -1125,7 +1128,8 @@ class Sweep {
     double t = 0;
     if (!__builtin_sub_overflow(d1y * d2x, d1x * d2y, &den) &&
         !__builtin_sub_overflow(cy * d2x, cx * d2y, &num)) {
-      if (den <= 0 || num < 0 || num > den) notACrossing();
+      // 0 <= num <= den with den > 0: a negative num is beyond den as an unsigned number.
+      if (den <= 0 || std::uint64_t(num) > std::uint64_t(den)) notACrossing();
       t = double(num) / double(den);
     } else {
       t = slabParameterWide(a, b);
