@@ -415,21 +415,22 @@ class Sweep {
       return;
     }
     vertex_ = int(out_.vertices.size());
-    // As offGridVertex() keeps a crossing (without its call), the exact point only where the
-    // first line's index is beyond what ArrangementVertex holds.
+    ArrangementVertex v;
+    out_.vertices.push_back(crossingVertex(v) ? v : offGridVertex(nullptr));
+  }
+  // crossingHere_'s two lines as an arrangement vertex, where the first line's index fits it.
+  [[gnu::always_inline]] bool crossingVertex(ArrangementVertex& v) {
     const std::int64_t line1 = lineOf(crossingHere_[0]), line2 = lineOf(crossingHere_[1]);
-    out_.vertices.push_back(line1 <= ArrangementVertex::kMaxIndex
-                                ? ArrangementVertex::crossing(line1, line2)
-                                : offGridVertex(nullptr));
+    if (line1 > ArrangementVertex::kMaxIndex) return false;
+    v = ArrangementVertex::crossing(line1, line2);
+    return true;
   }
   // p off the grid as the arrangement keeps it: where two crossing pieces met at p, the crossing
   // of their lines; else (an exact edge's end) the exact point.
   // (p null: the crossing of crossingHere_'s lines, worked out here where needed.)
   [[gnu::noinline]] ArrangementVertex offGridVertex(const XPoint* at) {
-    if (crossingHere_[0] >= 0) {
-      const std::int64_t line1 = lineOf(crossingHere_[0]), line2 = lineOf(crossingHere_[1]);
-      if (line1 <= ArrangementVertex::kMaxIndex) return ArrangementVertex::crossing(line1, line2);
-    }
+    ArrangementVertex v;
+    if (crossingHere_[0] >= 0 && crossingVertex(v)) return v;
     const XPoint p = at != nullptr ? *at : exactCrossing(crossingHere_[0], crossingHere_[1]);
     if (!PackedPoint::representable(p) ||
         out_.offGrid.size() > std::size_t(ArrangementVertex::kMaxIndex)) {
@@ -1120,10 +1121,11 @@ class Sweep {
     const std::int64_t d1x = std::int64_t(a.bx) - a.ax, d1y = std::int64_t(a.by) - a.ay;
     const std::int64_t d2x = std::int64_t(b.bx) - b.ax, d2y = std::int64_t(b.by) - b.ay;
     const std::int64_t cx = std::int64_t(b.ax) - a.ax, cy = std::int64_t(b.ay) - a.ay;
-    // The lower piece ends above the upper one: it is the steeper (dx > 0 for both), so
-    // den = d2 x d1 > 0, and the crossing lies on the lower piece: num = (b.a - a.a) x d2 lies in
-    // [0, den]. Each product of two differences lies within 2^62, so both fit 64 bits but where
-    // den reaches 2^63 (the grid range's two diagonals).
+    // crossingParameter() (pipeline.hpp) again, specialised: its sign normalisation and wide
+    // checks cost W3-1k even-odd 9.3M more here. The lower piece ends above the upper one: it is
+    // the steeper (dx > 0 for both), so den = d2 x d1 > 0, and the crossing lies on the lower
+    // piece: num = (b.a - a.a) x d2 lies in [0, den]. Each product of two differences lies
+    // within 2^62, so both fit 64 bits but where den reaches 2^63 (the grid range's diagonals).
     std::int64_t den = 0, num = 0;
     double t = 0;
     if (!__builtin_sub_overflow(d1y * d2x, d1x * d2y, &den) &&
